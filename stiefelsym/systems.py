@@ -1026,30 +1026,41 @@ def _kinetic_reads_point(g: Any, fn: int) -> str | None:
     return None
 
 
-def _traced_kinetic(t: Any, ref: Any) -> None:
-    """While a claim is traced: the kinetic energy given to :func:`euler_lagrange` must have constant
-    coefficients, and the potential and the constraints must depend on the position through their variable
-    only, decided from the graph (the same refusal for every method): K is read from T's gradients at the
-    point, and d/dt ∂T/∂q̇ = K q̈ and ∂T/∂q = 0 hold only where T does not move with the position; ∇U and Dg
-    are taken in their variable q, so a dependence on the velocity or on the point by another road (a value
-    closed over) would be a constant there, and the equations those of another Lagrangian."""
-    a = t.g.args[ref.i]
-    for i, who, must in ((2, "a kinetic energy", "T(t, v) is a quadratic form in the velocities v with constant "
-                                                 "coefficients"),
-                         (3, "a potential", "U(t, q) depends on the position q only, through q"),
-                         (4, "constraints", "g(t, q) depend on the position q only, through q")):
-        f = a[i] if len(a) > i else None
-        if type(f) is not type(ref) or t.g.ops[f.i] != "fn":
-            continue
-        what = _kinetic_reads_point(t.g, f.i)
-        if what is not None:
-            t.refuse(f"{who} that may depend on the point other than through its variable (it reads {what}): "
-                     f"{must}")
+def _own_variable_only(what: str, functions: tuple[tuple[int, str, str], ...]) -> Callable[[Any, Any], None]:
+    """The trace-time check of an engine step's functions (argument index, name, what it must be): each must
+    depend on the point through its own variable only, decided from the graph (the same refusal for every
+    method), since the step differentiates it in its variable: a dependence on the point by another road (a
+    value closed over, the scene's point, a flow, a variable of an enclosing function) would be a constant
+    there, and the step's result that of another function."""
+    def check(t: Any, ref: Any) -> None:
+        a = t.g.args[ref.i]
+        for i, who, must in functions:
+            f = a[i] if len(a) > i else None
+            if type(f) is not type(ref) or t.g.ops[f.i] != "fn":
+                continue
+            reads = _kinetic_reads_point(t.g, f.i)
+            if reads is not None:
+                t.refuse(f"{who} that may depend on the point other than through its variable (it reads {reads}): "
+                         f"{must} ({what})")
+    return check
+
+
+#: Euler-Lagrange: K is read from T's gradients at the point, and d/dt ∂T/∂q̇ = K q̈ and ∂T/∂q = 0 hold only where T
+#: does not move with the position; ∇U and Dg are taken in their variable q
+_traced_kinetic = _own_variable_only("the Euler-Lagrange equations", (
+    (2, "a kinetic energy", "T(t, v) is a quadratic form in the velocities v with constant coefficients"),
+    (3, "a potential", "U(t, q) depends on the position q only, through q"),
+    (4, "constraints", "g(t, q) depend on the position q only, through q")))
 
 
 euler_lagrange = primitive(euler_lagrange, returns=2, like={"T": "velocity", "U": "position",
                                                             "constraints": "position"})
 STEP_GRAPH_CHECKS["stiefelsym.systems.euler_lagrange"] = _traced_kinetic
+STEP_GRAPH_CHECKS["stiefelsym.systems.hamiltonian_flow"] = _own_variable_only("a Hamiltonian flow", (
+    (2, "a Hamiltonian", "H(t, z) depends on the point z only, through z"),
+    (3, "constraints", "F(t, z) depend on the point z only, through z")))
+STEP_GRAPH_CHECKS["stiefelsym.systems.stiefel_pairs_flow"] = _own_variable_only("a flow of pairs of Stiefel points", (
+    (2, "a Hamiltonian", "H(t, z) depends on the point z only, through z"),))
 hamiltonian_flow = primitive(hamiltonian_flow, returns=2, like={"H": "point", "constraints": "point"})
 stiefel_pairs_flow = primitive(stiefel_pairs_flow, like={"H": "point"})
 real_coordinates = primitive(real_coordinates)

@@ -161,3 +161,17 @@ def test_the_hidden_statements_against_numpy(tmp_path):
                          capture_output=True, text=True, timeout=120)
     last = res.stdout.strip().splitlines()[-1]
     assert " wrong=0 " in f" {last} " and "agree=0" not in last, res.stdout[-3000:]
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
+def test_a_hamiltonian_reaching_the_point_by_another_road_is_refused(method):
+    """The stop's own extension of the second review's W4 to the flows: a Hamiltonian of
+    systems.stiefel_pairs_flow (and hamiltonian_flow) that reads the point other than through its variable
+    (the second point closed over, its scene's Y) is refused when traced; through z it is accepted."""
+    for (cid, n, r), rec in _records(HERE / "own" / "flow_closure.py", "--method", method).items():
+        if cid.endswith("-true"):
+            assert rec["verdict"] in ("proved", "checked", "numeric"), (cid, n, r, rec["verdict"])
+        elif cid.endswith("-false"):
+            assert rec["verdict"] in ("fails", "undecided"), (cid, n, r, rec["verdict"])
+        else:
+            assert rec["verdict"] == "error" and POSITION in rec["message"], (cid, n, r, rec["verdict"])

@@ -59,7 +59,7 @@ def two_true(s):
 @claim("r2-two-calls-false", paper="prep", kind="id", sizes=SZ)
 def two_false(s):
     z = double_point(s)
-    a1 = _el(s, z, T1)
+    _el(s, z, T1)          # the first call: its own engine draws
     a2 = _el(s, z, T2)
     X1, Y1 = _deq(s, z)
     return {"X2": a2["X"] - X1, "Y2": a2["Y"] - Y1}
