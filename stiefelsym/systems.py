@@ -577,6 +577,7 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
         return _flat(constraints(t, {k: z[("q", k)] for k in names}))
 
     layout = _Layout(s, coords, position)
+    _every_variable_moved(layout, position, "euler_lagrange: the position")
     K = _kinetic_matrix(s, T, velocity, layout)
     _check_quadratic(s, lambda v: T(s, v), velocity, layout)
     gradU = _jacobian(s, U, position, layout)                                      # 1 × N
@@ -586,6 +587,27 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
     hess = _flat(derivative(s, lambda t, z: derivative(t, g, z, {("q", k): z[("v", k)] for k in names}),
                             point, along))
     return _solve_euler_lagrange(layout, K, gradU, Ja, hess, position)
+
+
+def _every_variable_moved(layout: _Layout, point: Point, what: str) -> None:
+    """Refuse a variable of the point no coordinate moves: the step differentiates its functions along the
+    coordinates only, so such a variable would be a constant of theirs riding in their argument (a velocity
+    handed to the potential as q["C"]), and the result that of other functions."""
+    moved = {name for name, _ in layout.coords}
+    extra = [k for k in point if k not in moved]
+    if extra:
+        raise ValueError(f"{what} has variables no coordinate moves ({', '.join(map(repr, extra))}): every variable "
+                         "of the point must be a coordinate's (a constant is closed over, not passed in the point)")
+
+
+def _pairs_cover(point: Point, pairs: Sequence[tuple[Hashable, Hashable]], what: str) -> None:
+    """Refuse a variable of the point that is in no (position, momentum) pair (see :func:`_every_variable_moved`)."""
+    named = {k for pair in pairs for k in pair}
+    extra = [k for k in point if k not in named]
+    if extra:
+        raise ValueError(f"{what}: the point has variables in no (position, momentum) pair "
+                         f"({', '.join(map(repr, extra))}): every variable of the point must be in a pair (a constant "
+                         "is closed over, not passed in the point)")
 
 
 #: what the Euler-Lagrange equations refuse of a kinetic energy (every method: see the dimension-free scene's)
@@ -663,6 +685,7 @@ def hamiltonian_flow(s: Scene, H: Callable[[Scene, dict], Any], constraints: Cal
     bracket matrix is C = {F_i, F_j}_0 = G_x G_pᵀ − G_p G_xᵀ, C μ = −(G_x H_pᵀ − G_p H_xᵀ), and
     ẋ = H_pᵀ + G_pᵀ μ, ṗ = −(H_xᵀ + G_xᵀ μ)."""
     _coordinate_scene(s, "a Hamiltonian flow in coordinates")
+    _pairs_cover(point, pairs, "hamiltonian_flow")
     positions = coords(s, [p for p, _ in pairs])
     momenta = coords(s, [m for _, m in pairs])
     xs = _Layout(s, positions, {p: point[p] for p, _ in pairs})
@@ -721,6 +744,7 @@ def stiefel_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
     On a coordinate scene it is :func:`hamiltonian_flow` with these constraints; on the
     dimension-free scene, at the scene's own points (X, P), (Y, Q), each pair has its own
     multipliers (its constraints involve only its letters): ẋ = H_p − xΠ, ṗ = −H_x + xΛ + pΠ."""
+    _pairs_cover(point, pairs, "stiefel_pairs_flow")
     if not isinstance(s, (Scene, TraceScene)) and hasattr(s, "pairs_dirac_flow"):
         return s.pairs_dirac_flow(H, point, pairs)
 
@@ -925,6 +949,7 @@ def graph_pairs_flow(s: Scene, H: Callable[[Scene, dict], Any], point: Point,
     and the solve of :func:`hamiltonian_flow`."""
     if not isinstance(s, Scene):
         raise TypeError(f"a flow of pairs of Stiefel points on a {type(s).__name__} (not a coordinate scene)")
+    _pairs_cover(point, pairs, "stiefel_pairs_flow")
     for k, M in point.items():
         _matrix_variable(M, k)
     gH = dict(zip(keys, grads))
@@ -958,6 +983,7 @@ def graph_euler_lagrange(s: Scene, position: Point, velocity: Point, coords: Coo
     for k, M in list(position.items()) + list(velocity.items()):
         _matrix_variable(M, k)
     layout = _Layout(s, coords, position)
+    _every_variable_moved(layout, position, "euler_lagrange: the position")
     n = len(wrt)
     zero_v = {k: M - M for k, M in velocity.items()}
     g0 = dict(zip(wrt, kinetic(s, zero_v)[:n]))

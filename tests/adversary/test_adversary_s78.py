@@ -175,3 +175,47 @@ def test_a_hamiltonian_reaching_the_point_by_another_road_is_refused(method):
             assert rec["verdict"] in ("fails", "undecided"), (cid, n, r, rec["verdict"])
         else:
             assert rec["verdict"] == "error" and POSITION in rec["message"], (cid, n, r, rec["verdict"])
+
+
+REVIEW3 = HERE / "review3"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_a_variable_of_the_point_no_coordinate_moves_is_refused(method):
+    """Third review W2 and W3: a velocity handed to the potential as an extra key of the position (q["C"]), and
+    the point handed to a Hamiltonian as an extra key of the point of a flow of pairs, rode in the functions'
+    argument as constants (the steps differentiate along the coordinates only): the false twins were proved.
+    Every variable of the point must now be a coordinate's (a pair's)."""
+    for name, words in (("el_extra_key.py", "no coordinate moves"), ("flow_extra_key.py", "in no (position, momentum) pair")):
+        for (cid, n, r), rec in _records(REVIEW3 / name, "--method", method).items():
+            assert rec["verdict"] == "error", (name, cid, n, r, rec["verdict"])
+            assert words in rec["message"] or POSITION in rec["message"], (name, cid, rec["message"])
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_a_generic_constant_of_the_kinetic_energy_is_a_constant(method):
+    """Third review W1, read as the step defines it: T = (1 + tr GᵀG)tr(ẊᵀẎ) with G = t.generic("G") is a kinetic
+    energy with the constant coefficient 1 + tr GᵀG, whatever point the claim builds from the same parameters
+    (there X = G): its accelerations are those of constant coefficients (the review's `-false`, passed by every
+    method where it decides) and not those of c(X)tr(ẊᵀẎ), a Lagrangian the claim does not write (its `-true`,
+    failed).  A function's closed-over values and parameters are constants of it; the engine refuses those it
+    sees move with the scene's point (guide: Euler-Lagrange)."""
+    for (cid, n, r), rec in _records(REVIEW3 / "el_generic_position.py", "--method", method).items():
+        if cid == "r3-el-generic-true":
+            assert rec["verdict"] in ("fails", "inconclusive"), (cid, n, r, rec["verdict"])
+        else:
+            assert rec["verdict"] in ("proved", "checked", "numeric", "inconclusive"), (cid, n, r, rec["verdict"])
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_the_third_reviews_points_of_lifted_scenes_and_whitelist_controls(method):
+    """Third review, no hole: at_point on lifted scenes (gradients, Dirac flows, constants; the false twins hold
+    at r = 1 or r = n, where Ψ or the flow's part vanishes), whitelisted calls fed a point value (refused), and a
+    cubic part of coefficient 10⁻⁶⁰ (refused by float too)."""
+    for (cid, n, r), rec in _records(REVIEW3 / "atpoint_lifted.py", "--method", method).items():
+        if cid.endswith("-true"):
+            assert rec["verdict"] in ("proved", "checked", "numeric"), (cid, n, r, rec["verdict"])
+        elif r not in (1, n):
+            assert rec["verdict"] == "fails", (cid, n, r, rec["verdict"])
+    for (cid, n, r), rec in _records(REVIEW3 / "el_whitelist_controls.py", "--method", method).items():
+        assert rec["verdict"] == "error", (cid, n, r, rec["verdict"])

@@ -4,7 +4,7 @@ the gradient of an affine form only; the false twin states the secant sum is the
 plus nothing (it is FALSE as a statement about the form: the form is not affine, a wrong-degree form should be
 refused, and the claimed value G of 'the gradient' ... see FINDINGS)."""
 from fractions import Fraction
-from stiefelsym import admissible, claim
+from stiefelsym import claim
 from stiefelsym.brackets import form_gradient
 from stiefelsym.systems import double_point, euler_lagrange, real_coordinates
 
