@@ -84,3 +84,36 @@ def hf_false(s):
     fl = _flow(s)
     AX = s.A @ s.X
     return {"Xdot - P + E11 P E11": fl["X"] - s.P + corner(s, s.P), "Pdot + AX - E11 AX E11": fl["P"] + AX - corner(s, AX)}
+
+
+# -- coordinates that span but are not orthonormal: 2E_ij (an orthogonal basis, as the module doc asks) --------
+# hamiltonian_flow pairs coordinate a of the positions with coordinate a of the momenta as canonical conjugates;
+# with the basis 2E_ij on both sides the conjugate of x_a = <X, 2E_a>/4 ... is not p_a: the step returns 4 times
+# the flow.  (Euler–Lagrange is basis-independent for a spanning basis: control r4-el-scaled-true.)
+
+def scaled_units(s, name):
+    return [(nm, B * 2) for nm, B in units(s, name, 0)]
+
+
+@claim("r4-el-scaled-true", kind="id", sizes=SZ)
+def el_scaled(s):
+    acc, _ = euler_lagrange(s, T, U, lambda t, q: [], {"X": s.X}, {"X": s.P}, scaled_units(s, "X"))
+    return {"Xdd + AX": acc["X"] + s.A @ s.X}
+
+
+def _flow_scaled(s):
+    fl, _ = hamiltonian_flow(s, H, lambda t, z: [], {"X": s.X, "P": s.P}, [("X", "P")],
+                             coords=lambda t, names: scaled_units(t, names[0]))
+    return fl
+
+
+@claim("r4-hflow-scaled-true", kind="id", sizes=SZ)
+def hf_scaled_true(s):
+    fl = _flow_scaled(s)
+    return {"Xdot - P": fl["X"] - s.P, "Pdot + AX": fl["P"] + s.A @ s.X}
+
+
+@claim("r4-hflow-scaled-false", kind="id", sizes=SZ)
+def hf_scaled_false(s):
+    fl = _flow_scaled(s)
+    return {"Xdot - 4P": fl["X"] - s.P * 4, "Pdot + 4AX": fl["P"] + s.A @ s.X * 4}
