@@ -256,10 +256,50 @@ def linear(a: Callable[[Any], Mat], name: str = "<x, a>") -> MatrixFunction:
 
 
 def quadratic(op: Callable[[Any, Mat], Mat] | None = None, name: str = "½<x, 𝔸x>") -> MatrixFunction:
-    """h(x) = ½<x, op(x)> with op symmetric for <,> (default: the identity), ∇h = op(x)."""
+    """h(x) = ½<x, op(x)> with op linear and symmetric for <,> (default: the identity), ∇h = op(x).  Every
+    evaluation of the gradient checks both (:func:`_check_symmetric`): for another op the gradient is not
+    op(x) (for a skew op, h = 0), and the step would hand on the gradient of another function."""
     if op is None:
-        op = lambda s, x: x   # noqa: E731
-    return MatrixFunction(lambda s, x: s.killing(x, op(s, x)) / 2, op, name)
+        return MatrixFunction(lambda s, x: s.killing(x, x) / 2, lambda s, x: x, name)
+    op_ = op
+
+    def gradient(s: Any, x: Mat) -> Mat:
+        return op_(s, x) + symmetric_operator_check(s, op_, x)
+    return MatrixFunction(lambda s, x: s.killing(x, op_(s, x)) / 2, gradient, name)
+
+
+def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat) -> Mat:
+    """The zero matrix of x's shape, once op is checked linear and symmetric for <,> (:func:`_check_symmetric`):
+    one step of the IR, so that every method makes the check when it evaluates the graph (a constant step: its
+    derivative along every flow is 0)."""
+    _check_symmetric(s, op, x)
+    return x - x
+
+
+#: the refusal of an operator that is not linear and symmetric for <,> (see :func:`quadratic`)
+NOT_SYMMETRIC = ("quadratic: the operator must be linear and symmetric for <,> (<y, op(z)> = <z, op(y)>, "
+                 "op(y + z) = op(y) + op(z)): the gradient of ½<x, op(x)> is op(x) for such an operator only")
+
+
+def _check_symmetric(s: Any, op: Callable[[Any, Mat], Mat], x: Mat) -> None:
+    """Refuse an op that is not additive and symmetric for <,> at two generic elements y, z of x's space whose
+    parameters are the engine's own (on the dimension-free scene, letters no claim can name): additivity makes
+    a polynomial op linear over ℚ, and then symmetry makes op(x) the gradient of ½<x, op(x)>.  Decided where the
+    field's test of zero decides it; the dimension-free scene tests normal forms."""
+    if hasattr(type(s), "_engine_letters"):            # the dimension-free scene
+        y, z = s._engine_letters("quadratic", x)
+    elif hasattr(type(s), "_engine_params"):
+        if not _field_in(s, _AFFINE_CHECKED):
+            return
+        m, k = x._shape()
+        y, z = (s._engine_params(f"quadratic:{t}", m, k, x.tags) for t in ("y", "z"))
+    else:
+        raise TypeError(f"quadratic: a gradient on a {type(s).__name__}")
+    field = s._field
+    sym = s.killing(y, op(s, z)) - s.killing(z, op(s, y))
+    add = op(s, y + z) - op(s, y) - op(s, z)
+    if not field.is_zero(sym) or not add.is_zero():
+        raise ValueError(NOT_SYMMETRIC)
 
 
 def _power(M: Mat, k: int, one: Mat) -> Mat:
@@ -456,6 +496,7 @@ def _engine_element(s: Any, space: Space, tag: str) -> Mat:
 
 _affine_form_gradient = form_gradient
 form_gradient = primitive(form_gradient, like={"form": "point"}, returns=("like", "point"))
+symmetric_operator_check = primitive(symmetric_operator_check, like={"op": "x"}, returns=("like", "x"), constant=True)
 
 
 #: the fields whose test of zero decides the degree in x that :func:`polynomial_gradient` derives (exact); on

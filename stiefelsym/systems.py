@@ -144,6 +144,27 @@ class _UnitCoordinates(list):
         return [(name, id(E)) for name, E in self] == self._made
 
 
+class _ComplexCoordinates(list):
+    """The coordinates of :func:`complex_coordinates`: (name, realify(E_ij, 0)) and (name, realify(0, E_ij))."""
+
+    def __init__(self, items) -> None:
+        super().__init__(items)
+        self._made = [(name, id(E)) for name, E in items]
+
+    def intact(self) -> bool:
+        return [(name, id(E)) for name, E in self] == self._made
+
+
+def _engine_coordinates(coords: Any, what: str) -> None:
+    """Refuse coordinates other than the engine's own, unedited: the steps take them for a basis that spans the
+    variables' space and is orthonormal (real) or of equal norms (complex), the same for positions and momenta,
+    which a list of the claim's own need not be (one left out, one scaled: the solve of other equations)."""
+    if not (isinstance(coords, (_UnitCoordinates, _ComplexCoordinates)) and coords.intact()):
+        raise ValueError(f"{what}: the coordinates must be the engine's, systems.real_coordinates or "
+                         "systems.complex_coordinates of the variables, as they were made (the step takes them for "
+                         "a basis that spans, orthonormal, the same for positions and momenta)")
+
+
 def _units(s: Scene) -> list[Mat]:
     """The unit n×r matrices E_ij (an orthonormal basis of M_{n,r}(ℝ))."""
     nr = s.n * s.r
@@ -185,7 +206,7 @@ def complex_coordinates(s: Scene, names: Sequence[Hashable]) -> list[tuple[Hasha
             Z = E - E
             out.append((name, s.realify(E, Z)))
             out.append((name, s.realify(Z, E)))
-    return out
+    return _ComplexCoordinates(out)
 
 
 def _flat(value: Any) -> list[Any]:
@@ -576,6 +597,7 @@ def euler_lagrange(s: Scene, T: Callable[[Scene, dict], Any], U: Callable[[Scene
     def g(t, z):
         return _flat(constraints(t, {k: z[("q", k)] for k in names}))
 
+    _engine_coordinates(coords, "euler_lagrange")
     layout = _Layout(s, coords, position)
     _every_variable_moved(layout, position, "euler_lagrange: the position")
     K = _kinetic_matrix(s, T, velocity, layout)
@@ -688,6 +710,8 @@ def hamiltonian_flow(s: Scene, H: Callable[[Scene, dict], Any], constraints: Cal
     _pairs_cover(point, pairs, "hamiltonian_flow")
     positions = coords(s, [p for p, _ in pairs])
     momenta = coords(s, [m for _, m in pairs])
+    _engine_coordinates(positions, "hamiltonian_flow")
+    _engine_coordinates(momenta, "hamiltonian_flow")
     xs = _Layout(s, positions, {p: point[p] for p, _ in pairs})
     ps = _Layout(s, momenta, {q: point[q] for _, q in pairs})
     N = len(positions)
@@ -982,6 +1006,7 @@ def graph_euler_lagrange(s: Scene, position: Point, velocity: Point, coords: Coo
         raise KeyError("the velocity must have the variables of the position")
     for k, M in list(position.items()) + list(velocity.items()):
         _matrix_variable(M, k)
+    _engine_coordinates(coords, "euler_lagrange")
     layout = _Layout(s, coords, position)
     _every_variable_moved(layout, position, "euler_lagrange: the position")
     n = len(wrt)

@@ -474,14 +474,26 @@ def test_euler_lagrange_by_reverse_mode_is_the_forward_one(monkeypatch, n, r, sy
     assert rev[1] == fwd[1]
 
 
-def test_coordinates_as_a_plain_basis_give_the_same_flow():
-    """The entries of the variables (real_coordinates) and the same basis handed over as a plain
-    list of matrices (the product with the basis) give one flow."""
+def test_coordinates_as_a_plain_basis_give_the_same_flow(monkeypatch):
+    """The entries of the variables (real_coordinates, read as entries) and the same basis taken as a basis
+    (the product with it, the layout's general path) give one flow; the same basis handed over as a plain list
+    of the claim's own is refused (stop 78: a list of one's own need not span nor be orthonormal)."""
+    import pytest
+
+    import stiefelsym.systems as systems
     s = _modular_scene(3, 2)
     H, pairs = a.H_coupled(a.FREE_KAPPA), [("X", "P"), ("Y", "Q")]
     fast, mu = hamiltonian_flow(s, H, coupled_constraints, coupled_point(s), pairs)
-    plain, mu2 = hamiltonian_flow(s, H, coupled_constraints, coupled_point(s), pairs,
-                                    coords=lambda t, names: list(real_coordinates(t, names)))
+    with pytest.raises(ValueError, match="the coordinates must be the engine's"):
+        hamiltonian_flow(s, H, coupled_constraints, coupled_point(s), pairs,
+                         coords=lambda t, names: list(real_coordinates(t, names)))
+    init = systems._Layout.__init__
+
+    def general(self, *args, **kw):
+        init(self, *args, **kw)
+        self.unit, self.unit_names = False, None
+    monkeypatch.setattr(systems._Layout, "__init__", general)
+    plain, mu2 = hamiltonian_flow(s, H, coupled_constraints, coupled_point(s), pairs)
     _same(fast, plain)
     assert mu == mu2
 

@@ -1034,6 +1034,22 @@ class FreeScene(PaperObjects):
             self._named.setdefault(key, G)
         return self._cached(key, lambda: self._prim(key, _w(self._named[key])))
 
+    def _engine_letters(self, tag: str, x: Mat) -> tuple[Mat, Mat]:
+        """Two generic elements of the space of x (one block m×k) of the engine's own: free letters no claim can
+        name (eng:tag:y, eng:tag:z), at which a step checks a claim's operator (brackets._check_symmetric)."""
+        e = entry_of(x) if isinstance(x, Mat) and x._shape() == (1, 1) else None
+        if not isinstance(e, NCPoly) or e.row not in ("n", "r") or e.col not in ("n", "r"):
+            raise refuse(f"{tag}: an operator on a space other than one block of n×n, n×r, r×n or r×r matrices",
+                         self.tracker)
+        out = []
+        for t in ("y", "z"):
+            key = f"eng:{tag}:{t}[{e.row}x{e.col}]"
+            if key not in self._named:
+                G, _ = letter_pair(key, f"{key}^T", e.row, e.col, f"{t}_{{{tag}}}", f"{t}_{{{tag}}}^{{T}}")
+                self._named[key] = G
+            out.append(self._cached(key, lambda key=key: self._prim(key, _w(self._named[key]))))
+        return out[0], out[1]
+
     def fresh(self, *args: Any) -> Mat:
         """fresh(index, m, k): the fresh element number ``index`` of a graph (a claim's ``s.fresh(m, k)``), a free
         letter no claim can name (gen:fresh:i; a claim's generic letters are letters and digits), with its

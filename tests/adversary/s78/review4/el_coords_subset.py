@@ -9,7 +9,7 @@ a zero (1,1) entry; the FALSE twin says Ẍ = −AX + E_11(AX)E_11 (r4-el-subset
 Same for hamiltonian_flow of H = ½tr(PᵀP) + ½tr(XᵀAX), no constraints, with coords=lambda s, names:
 real_coordinates(s, names)[1:]: Ṗ = −AX (TRUE), Ṗ = −AX + E_11(AX)E_11 (FALSE)."""
 from stiefelsym import admissible, claim
-from stiefelsym.systems import euler_lagrange, hamiltonian_flow, real_coordinates
+from stiefelsym.systems import euler_lagrange, hamiltonian_flow
 
 SZ = admissible(n_max=3, n_min=2)
 
