@@ -55,3 +55,27 @@ def ident_bx(s):
     B, op = _by_identity(s, x)
     br = lie_poisson(GL_N).bracket(s, quadratic(op), linear(lambda t: b), x)
     return {"{h, g} = Λ(Bx, b)": br - s.killing(x, comm(B @ x, b))}
+
+
+@claim("r5-quadstate-contradiction", kind="pb", sizes=SZ)
+def stateful_contradiction(s):
+    """One claim, two checks that no function h can satisfy together: h = ½<·,·> at a generic point (so everywhere,
+    as a polynomial identity in that point's parameters: ∇h(x) = x and {h, <.,b>}(x) = <x,[x,b]> = 0 on gl(n)),
+    and {h, <.,b>}(x) = <x, [Bx, b]> ≠ 0.  Both proved means one verdict is wrong whatever h is taken to be."""
+    B, op = _stateful(s)
+    h = quadratic(op)
+    x, b, y = GL_N.generic(s, "x"), GL_N.generic(s, "b"), GL_N.generic(s, "y")
+    br = lie_poisson(GL_N).bracket(s, h, linear(lambda t: b), x)      # op's first call: B·x
+    return {"{h, g}(x) = <x,[Bx,b]>": br - s.killing(x, comm(B @ x, b)),
+            "h(y) = ½<y, y> at a generic y": h(s, y) - s.killing(y, y) / 2}
+
+
+@claim("r5-quadident-contradiction", kind="pb", sizes=SZ)
+def ident_contradiction(s):
+    """The same pair with an op that tests its argument's identity instead of keeping state."""
+    x, b, y = GL_N.generic(s, "x"), GL_N.generic(s, "b"), GL_N.generic(s, "y")
+    B, op = _by_identity(s, x)
+    h = quadratic(op)
+    br = lie_poisson(GL_N).bracket(s, h, linear(lambda t: b), x)
+    return {"{h, g}(x) = <x,[Bx,b]>": br - s.killing(x, comm(B @ x, b)),
+            "h(y) = ½<y, y> at a generic y": h(s, y) - s.killing(y, y) / 2}
