@@ -263,17 +263,34 @@ def quadratic(op: Callable[[Any, Mat], Mat] | None = None, name: str = "Â½<x, ð
         return MatrixFunction(lambda s, x: s.killing(x, x) / 2, lambda s, x: x, name)
     op_ = op
 
-    def gradient(s: Any, x: Mat) -> Mat:
-        return op_(s, x) + symmetric_operator_check(s, op_, x)
-    return MatrixFunction(lambda s, x: s.killing(x, op_(s, x)) / 2, gradient, name)
+    def checked(s: Any, x: Mat) -> Mat:
+        v = op_(s, x)
+        zero = symmetric_operator_check(s, op_, x, v)
+        # every evaluation of op in the claim is of one function (a stateful op, or one that tests its
+        # argument, would have the check pass for another function than the one the value and gradient use)
+        same_step_function(zero, op_, "the operator of brackets.quadratic")
+        return v + zero
+
+    return MatrixFunction(lambda s, x: s.killing(x, checked(s, x)) / 2, checked, name)
 
 
-def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat) -> Mat:
-    """The zero matrix of x's shape, once op is checked linear and symmetric for <,> (:func:`_check_symmetric`):
-    one step of the IR, so that every method makes the check when it evaluates the graph (a constant step: its
-    derivative along every flow is 0)."""
+def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat, value: Mat) -> Mat:
+    """The zero matrix of x's shape, once op is checked linear and symmetric for <,> (:func:`_check_symmetric`)
+    and its value at x is the claim's ``value`` (the same function where the claim evaluates it): one step of
+    the IR, so that every method makes the check when it evaluates the graph (a constant step: its derivative
+    along every flow is 0)."""
+    if not _vanishes(s, op(s, x) - value):
+        raise ValueError(NOT_SYMMETRIC + " (and one function: its value at x differs between two evaluations)")
     _check_symmetric(s, op, x)
     return x - x
+
+
+def _vanishes(s: Any, M: Mat) -> bool:
+    """Whether a matrix is zero, where the scene's field decides it (else taken as zero: the symmetric check is
+    not made there either)."""
+    if not hasattr(type(s), "_engine_letters") and not _field_in(s, _AFFINE_CHECKED):
+        return True
+    return M.is_zero()
 
 
 #: the refusal of an operator that is not linear and symmetric for <,> (see :func:`quadratic`)

@@ -1038,6 +1038,8 @@ class FreeScene(PaperObjects):
         """Two generic elements of the space of x (one block m×k) of the engine's own: free letters no claim can
         name (eng:tag:y, eng:tag:z), at which a step checks a claim's operator (brackets._check_symmetric)."""
         e = entry_of(x) if isinstance(x, Mat) and x._shape() == (1, 1) else None
+        while type(e) is Dual:          # on a tangent scene: the letters' type is the value's
+            e = e.a
         if not isinstance(e, NCPoly) or e.row not in ("n", "r") or e.col not in ("n", "r"):
             raise refuse(f"{tag}: an operator on a space other than one block of n×n, n×r, r×n or r×r matrices",
                          self.tracker)
