@@ -263,15 +263,16 @@ def quadratic(op: Callable[[Any, Mat], Mat] | None = None, name: str = "Â½<x, ð
         return MatrixFunction(lambda s, x: s.killing(x, x) / 2, lambda s, x: x, name)
     op_ = op
 
-    def checked(s: Any, x: Mat) -> Mat:
+    def gradient(s: Any, x: Mat) -> Mat:
         v = op_(s, x)
         zero = symmetric_operator_check(s, op_, x, v)
-        # every evaluation of op in the claim is of one function (a stateful op, or one that tests its
-        # argument, would have the check pass for another function than the one the value and gradient use)
+        # every check of op in the claim is of one function, and its value at x is the gradient's (a stateful
+        # op, or one that tests its argument, would have the check pass for another function than the one the
+        # gradient uses)
         same_step_function(zero, op_, "the operator of brackets.quadratic")
         return v + zero
 
-    return MatrixFunction(lambda s, x: s.killing(x, checked(s, x)) / 2, checked, name)
+    return MatrixFunction(lambda s, x: s.killing(x, op_(s, x)) / 2, gradient, name)
 
 
 def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat, value: Mat) -> Mat:
@@ -513,7 +514,7 @@ def _engine_element(s: Any, space: Space, tag: str) -> Mat:
 
 _affine_form_gradient = form_gradient
 form_gradient = primitive(form_gradient, like={"form": "point"}, returns=("like", "point"))
-symmetric_operator_check = primitive(symmetric_operator_check, like={"op": "x"}, returns=("like", "x"), constant=True)
+symmetric_operator_check = primitive(symmetric_operator_check, like={"op": "x"}, returns=("like", "x"), zero=True)
 
 
 #: the fields whose test of zero decides the degree in x that :func:`polynomial_gradient` derives (exact); on

@@ -1037,7 +1037,7 @@ derivative = primitive(derivative, like={"F": "point"}, returns=("like", "F"))
 #: what a kinetic energy's function may read of its scene besides its velocity: the problem's constants (the
 #: position, the point, flows and brackets are refused: the equations are solved for constant coefficients)
 KINETIC_CONSTANT_ATTRS = frozenset({"A", "Ainv", "In", "Ir", "a", "eps", "kappa", "lam", "eta", "theta", "xi", "zeta"})
-KINETIC_CONSTANT_CALLS = frozenset({"conj", "const", "fresh", "general_params", "generic", "identity", "mat", "q",
+KINETIC_CONSTANT_CALLS = frozenset({"conj", "const", "fresh", "general_params", "generic", "identity", "killing", "mat", "q",
                                     "realify", "resolvent", "scalar", "scalar_matrix", "sym_operator", "tr", "zeros"})
 KINETIC_CONSTANT_STEPS = frozenset(f"stiefelsym.{x}" for x in (
     "systems.real_coordinates", "systems.complex_coordinates", "systems.hermitian_entries", "twisted.basis_vector",

@@ -77,7 +77,7 @@ from fractions import Fraction
 from typing import Any
 
 from stiefelsym.ir.graph import Graph, Named, Ref, _ref
-from stiefelsym.ir.trace import CONSTANT_PRIMITIVES, MATRICES, NUMBERS, PRIMITIVES
+from stiefelsym.ir.trace import CONSTANT_PRIMITIVES, MATRICES, NUMBERS, PRIMITIVES, ZERO_PRIMITIVES
 
 #: the engine step that reads a flow's components (registered below)
 TANGENT = "stiefelsym.ir.derivative.tangent_vector"
@@ -543,6 +543,8 @@ class _Derivative:
         if op == "fn":
             raise Unsupported("a function of the scene defined inside the function (a nested derivative, "
                               "gradient, flow or bracket)")
+        if op == "prim" and type(a[0]) is Named and a[0].qualname in ZERO_PRIMITIVES:
+            return None                     # zero wherever it is defined: constant along every flow
         if op == "prim" and type(a[0]) is Named and a[0].qualname in CONSTANT_PRIMITIVES:
             if any(self.moves(x) for x in a[1:]):
                 raise Unsupported(f"an engine step ({a[0].qualname.rsplit('.', 1)[-1]}) at a moving argument")
@@ -992,6 +994,8 @@ class _Gradient(_Derivative):
             return _S                       # the eigenvalues of A, read one by one (constants)
         if op == "prim" and _constant_vector(a[0]):
             return _M                       # a coordinate basis vector (a constant)
+        if op == "prim" and type(a[0]) is Named and a[0].qualname in ZERO_PRIMITIVES:
+            return _M                       # a check whose value is a zero matrix
         raise Unsupported(f"a {op} whose kind (number or matrix) the graph does not show")
 
     def build(self) -> Ref:
@@ -1066,6 +1070,8 @@ class _Gradient(_Derivative):
                 raise Unsupported("an operator other than the scene's symmetric operator inside the function of a gradient")
         elif op == "list":
             return                          # the rows of a matrix of given entries (s.mat sends to its cells)
+        elif op == "prim" and type(a[0]) is Named and a[0].qualname in ZERO_PRIMITIVES:
+            return                          # zero wherever defined: no adjoint reaches its arguments
         elif op == "prim" and _constant_vector(a[0]):
             if any(self.moving(x) for x in a[1:]):
                 raise Unsupported("a coordinate basis vector at a moving argument inside the function of a gradient")
@@ -1249,6 +1255,8 @@ class _Gradient(_Derivative):
             self.send(adj, a[1], [add("apply", (p(a[0]), self.full(j, M, c, has_c)))])
         elif op in ("attr", "call", "const"):
             return                                          # constants
+        elif op == "prim" and type(a[0]) is Named and a[0].qualname in ZERO_PRIMITIVES:
+            pass                                            # zero wherever defined: its arguments get no adjoint
         else:
             raise Unsupported(f"no rule for a {op} of matrices")
 

@@ -52,7 +52,7 @@ _LIBRARIES = ("numpy", "flint", "symengine", "fractions", "operator", "math", "m
 _LIBRARY_SUBMODULES = ("numpy.random", "numpy.linalg")
 #: registries (module, attribute) whose contents are fingerprinted
 _REGISTRIES = (("stiefelsym.ir.trace", "PRIMITIVES"), ("stiefelsym.ir.trace", "_NAMED"),
-               ("stiefelsym.ir.trace", "CONSTANT_PRIMITIVES"),
+               ("stiefelsym.ir.trace", "CONSTANT_PRIMITIVES"), ("stiefelsym.ir.trace", "ZERO_PRIMITIVES"),
                ("stiefelsym.ir.trace", "VALUE_ATTRS"), ("stiefelsym.backends.native", "_REGISTERED"),
                ("stiefelsym.methods.fixed_size", "_REGISTERED"), ("stiefelsym.ir.evaluate", "_ARITH"))
 

@@ -45,12 +45,16 @@ PRIMITIVES: dict[str, Callable] = {}
 #: engine steps whose value does not move with the point (their derivative along a flow is 0), by
 #: qualified name
 CONSTANT_PRIMITIVES: dict[str, Callable] = {}
+#: engine steps whose value is zero wherever they are defined (a check of their arguments that raises otherwise):
+#: their derivative along every flow and their adjoint are 0, whatever their arguments
+ZERO_PRIMITIVES: dict[str, Callable] = {}
 #: engine constants a claim may hand to a primitive, by identity
 _NAMED: dict[int, tuple[str, Any]] = {}
 
 
 def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str, str] | None = None,
-              constant: bool = False, check: Callable[["Trace", dict], None] | None = None) -> Any:
+              constant: bool = False, check: Callable[["Trace", dict], None] | None = None,
+              zero: bool = False) -> Any:
     """Mark an engine function as one step of the IR: called while a claim is traced, it becomes a
     ``prim`` node (its function arguments traced once); otherwise it runs as written.
 
@@ -64,12 +68,14 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
     (``trace.refuse``) arguments the step is not defined for, from the graph alone (the same refusal whatever
     the method)."""
     if f is None:
-        return lambda g: primitive(g, returns=returns, like=like, constant=constant, check=check)
+        return lambda g: primitive(g, returns=returns, like=like, constant=constant, check=check, zero=zero)
     refuse_registration("an engine step (primitive)")
     qual = f"{f.__module__}.{f.__qualname__}"
     PRIMITIVES[qual] = f
     if constant:
         CONSTANT_PRIMITIVES[qual] = f
+    if zero:
+        ZERO_PRIMITIVES[qual] = f
     sig = inspect.signature(f)
 
     @functools.wraps(f)

@@ -231,9 +231,11 @@ def test_a_quadratic_function_of_an_operator_that_is_not_symmetric_is_refused(me
     proved for all n, r the false Casimir residual and bracket.  The gradient is now one constant step of the
     graph that checks op linear and symmetric at two generic elements of the engine's own, under every method."""
     for (cid, n, r), rec in _records(REVIEW4 / "quadratic_nonsymmetric.py", "--method", method).items():
-        # the value too (h(x) = ½<x, [K, x]>) is of the checked operator since the fifth review
-        assert rec["verdict"] in ("error", "undecided") and "linear and symmetric" in rec["message"], (
-            cid, n, r, rec["verdict"], rec["message"])
+        if cid == "r4-quad-adk-value-zero":         # the value ½<x, [K, x]> = 0 itself is right
+            assert rec["verdict"] in ("proved", "checked", "numeric"), (cid, rec["verdict"])
+        else:
+            assert rec["verdict"] in ("error", "undecided") and "linear and symmetric" in rec["message"], (
+                cid, n, r, rec["verdict"], rec["message"])
 
 
 @pytest.mark.parametrize("method", ["exact", "modular", "float"])
@@ -251,9 +253,9 @@ def test_a_quadratic_operator_is_one_function(method):
     """Fifth review W1: the check of brackets.quadratic traced op once more, apart from the evaluations the value
     and the gradient used, so an op with state (B·y at its first call, y after) or one that tests its argument
     (B·y only at x itself) passed the check and the claim used another function: every method proved a pair of
-    residuals no h satisfies.  The check now compares op's value at x with the claim's, and holds every
-    evaluation of op to one graph (refused when traced otherwise: s78/own/quadratic_state_symmetric.py, an op
-    symmetric at every call but not one op)."""
+    residuals no h satisfies.  The check now compares op's value at x with the gradient's, and holds every
+    check of op to one graph (s78/own/quadratic_state_symmetric.py, an op symmetric at every call but not one
+    op, is refused too)."""
     recs = dict(_records(HERE / "review5" / "quadratic_stateful_op.py", "--method", method))
     recs.update(_records(HERE / "own" / "quadratic_state_symmetric.py", "--method", method))
     for (cid, n, r), rec in recs.items():
