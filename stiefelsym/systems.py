@@ -54,6 +54,7 @@ from typing import Any, Callable, Hashable, Mapping, Sequence
 import numpy as np
 
 from stiefelsym import scene as scene_module
+from stiefelsym.ir.derivative import CONSTANT_ATTRS, NUMERIC_CALLS
 from stiefelsym.ir.trace import PRIMITIVES, STEP_GRAPH_CHECKS, TraceScene, primitive
 from stiefelsym.backends.matrix import Mat, NeedsCoordinates, _coordinates, _refused, backend, block, definite
 from stiefelsym.backends.reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
@@ -1034,11 +1035,11 @@ PRIMITIVES[f"{__name__}.stiefel_pairs_flow:graph"] = graph_pairs_flow
 # the functions that need the engine's scene (coordinates, derivatives at points of other phase
 # spaces) are single steps of a claim's graph; the points and the complex helpers are traced with it
 derivative = primitive(derivative, like={"F": "point"}, returns=("like", "F"))
-#: what a kinetic energy's function may read of its scene besides its velocity: the problem's constants (the
-#: position, the point, flows and brackets are refused: the equations are solved for constant coefficients)
-KINETIC_CONSTANT_ATTRS = frozenset({"A", "Ainv", "In", "Ir", "a", "eps", "kappa", "lam", "eta", "theta", "xi", "zeta"})
-KINETIC_CONSTANT_CALLS = frozenset({"conj", "const", "fresh", "general_params", "generic", "identity", "killing", "mat", "q",
-                                    "realify", "resolvent", "scalar", "scalar_matrix", "sym_operator", "tr", "zeros"})
+#: what a step's function may read of its scene besides its variable: the problem's constants (the derivative
+#: pass's constant attributes, and A's eigenvalues) and the calls that compute from their arguments and constants
+#: (the pass's numeric calls, and the scene's symmetric operator); the point, flows and brackets are refused
+KINETIC_CONSTANT_ATTRS = CONSTANT_ATTRS | {"a"}
+KINETIC_CONSTANT_CALLS = NUMERIC_CALLS | {"sym_operator"}
 KINETIC_CONSTANT_STEPS = frozenset(f"stiefelsym.{x}" for x in (
     "systems.real_coordinates", "systems.complex_coordinates", "systems.hermitian_entries", "twisted.basis_vector",
     "twisted.block_projector", "twisted.reflection", "twisted.last_basis_vector", "twisted.leading_basis_vectors",
