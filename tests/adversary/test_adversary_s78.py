@@ -275,3 +275,14 @@ def test_the_fifth_reviews_symmetric_operators_tensors_and_statements(method):
                     cid == "r5-quad-proj-false" and r == n), (name, cid, n, r, rec["verdict"])
             elif cid.endswith("-true"):
                 assert rec["verdict"] != "fails", (name, cid, n, r, rec["verdict"])
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
+def test_a_kinetic_energy_that_is_not_a_polynomial_is_refused(method):
+    """The stop's last own attempt: T = tr(ẊᵀẎ) + tr R(tr ẊᵀẊ), a call a step's function may make (the resolvent)
+    at a parameter that moves with the velocity: not a polynomial, so its third difference does not vanish; the
+    false (D-eq) accelerations are refused by every method (free: needs coordinates)."""
+    for (cid, n, r), rec in _records(HERE / "own" / "kinetic_rational.py", "--method", method).items():
+        assert rec["verdict"] in ("error", "undecided"), (cid, n, r, rec["verdict"])
+        if method != "free":
+            assert NOT_QUADRATIC in rec["message"], (cid, n, r, rec["message"])
