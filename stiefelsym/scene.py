@@ -18,6 +18,7 @@ Charts (how a point of T*V_{n,r} is produced from free parameters):
 """
 from __future__ import annotations
 
+import hashlib
 import random
 import re
 from dataclasses import dataclass, field as dc_field
@@ -523,11 +524,26 @@ class Scene(PaperObjects):
         generator seeded by a digest of the tag, a count of such draws and the state of the scene's generator,
         which they neither read from nor advance (the claim's next draws are the same with or without them,
         and equal none of them but by chance); over a symbolic field, symbols of names no claim can give.
-        Drawn as the scene's own parameters would be, they were the claim's next draws (stop 78)."""
+        Drawn as the scene's own parameters would be, they were the claim's next draws (stop 78).
+
+        Over a symbolic field one matrix of symbols serves every check of its tag and shape on the scene:
+        each check is an identity in those symbols, which no value of the graph holds (the steps return
+        their values without them), so sharing them between checks changes no check's verdict, and the
+        ring of the exact method grows by one set of symbols, not by one per check (its exponent vectors
+        are dense: each new symbol slows every later product)."""
+        if self._field.name == "symbolic":
+            shared = self.__dict__.setdefault("_engine_symbols", {})
+            key = (tag, m, k, tags)
+            if key not in shared:
+                shared[key] = self._engine_draw(tag, m, k, tags)
+            return shared[key]
+        return self._engine_draw(tag, m, k, tags)
+
+    def _engine_draw(self, tag: str, m: int, k: int, tags=("?", "?")) -> Mat:
+        """A fresh draw of :meth:`_engine_params`."""
         count = self.__dict__.get("_engine_draws", 0) + 1
         self.__dict__["_engine_draws"] = count
         rng = self._rng
-        import hashlib
         seed = hashlib.sha256(repr((tag, count, rng.getstate() if rng is not None else None)).encode()).digest()
         own = random.Random(int.from_bytes(seed[:16], "big"))
         M = self.zeros(m, k, tags)
@@ -1135,9 +1151,9 @@ class Scene(PaperObjects):
             unify(xi.tags[1], space, f"the operator on so({space})", xi.tracker)
             f = xi._field
             half = f.const(Fraction(1, 2))
-            a = xi._view()
+            a = xi._entry_reader()
             # coordinates of the skew part in the orthonormal basis E_i ∧ E_j
-            comps = [f.normalize((a[i, j] - a[j, i]) * half) for (i, j) in basis]
+            comps = [f.normalize((a(i, j) - a(j, i)) * half) for (i, j) in basis]
             out = Mat.zeros(n, n, f, (space, space), xi.tracker)
             out._coords = xi._coords
             o = out._a
@@ -1146,9 +1162,9 @@ class Scene(PaperObjects):
                 # placed in the upper triangle W; AA(xi) = W - Wᵀ
                 col = np.empty((len(basis), 1), dtype=object)
                 col[:, 0] = comps
-                v = (coeffs @ Mat._wrap(col, f, ("so", "?"))).T._view()[0]
+                v = (coeffs @ Mat._wrap(col, f, ("so", "?")))._entry_reader()
                 for k, (i, j) in enumerate(basis):
-                    o[i, j] = v[k]
+                    o[i, j] = v(k, 0)
                 return out - out.T
             c = coeffs._view()                  # a matrix of another field (a base scene's operator)
             for k, (i, j) in enumerate(basis):

@@ -23,7 +23,7 @@ import operator
 import re
 from fractions import Fraction
 from functools import lru_cache
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 
@@ -359,6 +359,19 @@ class Mat:
         if self._obj is None:
             self._obj = backend(self._field).to_obj(self._n)
         return self._obj
+
+    def _entry_reader(self) -> Callable[[int, int], Any]:
+        """(i, j) ↦ the entry, read from the native storage where the backend reads one entry alone
+        (the exact backend: no conversion of the whole matrix), else from the generic entries (engine
+        only: not recorded as an entry read)."""
+        if self._obj is None:
+            be = backend(self._field)
+            entry = getattr(be, "entry", None)
+            if entry is not None and 0 not in self._shape() and entry(self._n, 0, 0) is not NotImplemented:
+                nat = self._n
+                return lambda i, j: entry(nat, i, j)
+        a = self._view()
+        return lambda i, j: a[i, j]
 
     def _nat(self) -> Any:
         """The native storage, or None when the field has no whole-matrix backend."""
