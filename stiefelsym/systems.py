@@ -1047,7 +1047,7 @@ KINETIC_CONSTANT_STEPS = frozenset(f"stiefelsym.{x}" for x in (
     "twisted.kernel_annihilator", "twisted.magnetic_matrix"))
 
 
-def _kinetic_reads_point(g: Any, fn: int) -> str | None:
+def _reads_beyond_own_variable(g: Any, fn: int) -> str | None:
     """What the body of the traced function ``fn`` (the kinetic energy T(t, v), the potential U(t, q) or the
     constraints g(t, q)) reads that may move with the point other than its own variable, directly or through a
     value of the claim it closes over (the position z["X"], t.X, a flow, a bracket, a variable of a function
@@ -1090,7 +1090,7 @@ def _own_variable_only(what: str, functions: tuple[tuple[int, str, str], ...]) -
             f = a[i] if len(a) > i else None
             if type(f) is not type(ref) or t.g.ops[f.i] != "fn":
                 continue
-            reads = _kinetic_reads_point(t.g, f.i)
+            reads = _reads_beyond_own_variable(t.g, f.i)
             if reads is not None:
                 t.refuse(f"{who} that may depend on the point other than through its variable (it reads {reads}): "
                          f"{must} ({what})")
