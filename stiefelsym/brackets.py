@@ -44,6 +44,7 @@ from typing import Any, Callable, Sequence
 
 from stiefelsym.ir.trace import primitive, same_scene_function, same_step_function
 from stiefelsym.backends.matrix import Mat, comm
+from stiefelsym.scene import engine_check
 
 Scalar = Any
 Function = Callable[[Any], Any]
@@ -84,22 +85,29 @@ def metric_constraints(t: Any) -> list[Mat]:
     return [t.X.T @ t.X - t.Ir, t.X.T @ t.Ainv @ t.P + t.P.T @ t.Ainv @ t.X]
 
 
-def _scalar_constraints(constraints: Callable[[Any], Sequence[Mat]], r: int) -> list[Function]:
-    """The upper-triangle entries of symmetric r x r matrix constraints, as scalar functions."""
+def _scalar_constraints(constraints: Callable[[Any], Sequence[Mat]], s: Any) -> list[Function]:
+    """The entries on and above the diagonal of every matrix of the list ``constraints(s)`` (each square), as
+    scalar functions: for a symmetric matrix, each of its conditions once.  (Every matrix of the list: stop 79
+    found the first two alone taken, whatever the list's length.)"""
     out = []
-    for k in range(2):
-        for i in range(r):
-            for j in range(i, r):
+    for k, M in enumerate(constraints(s)):
+        rows, cols = (int(x) for x in M.shape)
+        if rows != cols:
+            raise ValueError(f"dirac_bracket_for: constraint {k + 1} is a {rows}x{cols} matrix; the constraints are "
+                             "symmetric (square) matrices, read by their entries on and above the diagonal")
+        for i in range(rows):
+            for j in range(i, rows):
                 out.append(lambda t, k=k, i=i, j=j: constraints(t)[k][i, j])
     return out
 
 
 def dirac_bracket_for(constraints: Callable[[Any], Sequence[Mat]], name: str = "") -> PhaseBracket:
     """The Dirac bracket {f, g} = {f, g}_0 + Σ {F_i, f}_0 C_ij {F_j, g}_0 (Dirac_bracket) for the
-    scalar constraints F_i (upper triangles of the two symmetric r x r matrices ``constraints``),
-    C the inverse of ({F_i, F_j}_0); only the canonical bracket of the scene is used."""
+    scalar constraints F_i (the entries on and above the diagonal of each matrix of the list ``constraints``,
+    symmetric square matrices: a lower triangle is not read), C the inverse of ({F_i, F_j}_0); only the
+    canonical bracket of the scene is used."""
     def evaluate(s: Any, F: Function, G: Function) -> Scalar:
-        Fs = _scalar_constraints(constraints, s.r)
+        Fs = _scalar_constraints(constraints, s)
         m = len(Fs)
         C0 = s.mat([[s.canonical_bracket(Fi, Fj) for Fj in Fs] for Fi in Fs], ("cond", "cond"))
         C = C0.inv()
@@ -314,8 +322,9 @@ def _check_symmetric(s: Any, op: Callable[[Any, Mat], Mat], x: Mat) -> None:
     else:
         raise TypeError(f"quadratic: a gradient on a {type(s).__name__}")
     field = s._field
-    sym = s.killing(y, op(s, z)) - s.killing(z, op(s, y))
-    add = op(s, y + z) - op(s, y) - op(s, z)
+    with engine_check():
+        sym = s.killing(y, op(s, z)) - s.killing(z, op(s, y))
+        add = op(s, y + z) - op(s, y) - op(s, z)
     if not field.is_zero(sym) or not add.is_zero():
         raise ValueError(NOT_SYMMETRIC)
 
@@ -489,7 +498,8 @@ def _check_affine(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, base
     if not _field_in(s, _AFFINE_CHECKED):
         return
     w = _engine_element(s, space, "form_gradient")
-    residual = form(s, w) - base - pairing(s, G, w)
+    with engine_check():
+        residual = form(s, w) - base - pairing(s, G, w)
     if not field.is_zero(residual):
         raise ValueError("form_gradient: the form is not affine on "
                          f"{space.name} (its gradient is not the sum over a basis; refused, as the "
@@ -570,7 +580,8 @@ def _form_degree(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, point
     w = _engine_element(s, space, "polynomial_gradient")
     values = [form(s, point)]
     for d in range(MAX_FORM_DEGREE + 1):
-        values.append(form(s, point + w * (d + 1)))
+        with engine_check():
+            values.append(form(s, point + w * (d + 1)))
         k = d + 1                       # the k-th difference of the values at t = 0, ..., k
         if not decided and d < MAX_FORM_DEGREE:
             continue                    # floats, balls: only the last difference is tested (see _DEGREE_DECIDED)

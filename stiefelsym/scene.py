@@ -18,12 +18,13 @@ Charts (how a point of T*V_{n,r} is produced from free parameters):
 """
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import random
 import re
 from dataclasses import dataclass, field as dc_field
 from fractions import Fraction
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, Iterator, Mapping
 
 import numpy as np
 
@@ -526,14 +527,17 @@ class Scene(PaperObjects):
         and equal none of them but by chance); over a symbolic field, symbols of names no claim can give.
         Drawn as the scene's own parameters would be, they were the claim's next draws (stop 78).
 
-        Over a symbolic field one matrix of symbols serves every check of its tag and shape on the scene:
-        each check is an identity in those symbols, which no value of the graph holds (the steps return
-        their values without them), so sharing them between checks changes no check's verdict, and the
-        ring of the exact method grows by one set of symbols, not by one per check (its exponent vectors
-        are dense: each new symbol slows every later product)."""
+        Over a symbolic field one matrix of symbols serves every check of its tag and shape on the scene at
+        one depth of checks (:func:`engine_check`): each check is an identity in those symbols, and no value
+        of the graph holds them (the steps return their values without them), so checks made one after the
+        other may share them; a check made while another evaluates the claim's function at its symbols (a
+        step nested in the function of another) takes symbols of its own, else it would check its function
+        along the other's direction only, at points made of it (stop 79: a nested polynomial_gradient then
+        took its degree too low).  The ring of the exact method grows by one set of symbols per depth, not
+        by one per check (a new symbol late in an evaluation carries every polynomial to a wider ring)."""
         if self._field.name == "symbolic":
             shared = self.__dict__.setdefault("_engine_symbols", {})
-            key = (tag, m, k, tags)
+            key = (tag, m, k, tags, ENGINE_CHECK_DEPTH[0])
             if key not in shared:
                 shared[key] = self._engine_draw(tag, m, k, tags)
             return shared[key]
@@ -2183,6 +2187,22 @@ def _on_its_space(on_n: Callable[[Mat], Mat], make_on_r: Callable[[], Callable[[
             return on_r[0](xi)
         return on_n(xi)
     return apply
+
+
+#: the number of engine checks in progress (:func:`engine_check`): the depth at which a check draws its symbols
+ENGINE_CHECK_DEPTH = [0]
+
+
+@contextlib.contextmanager
+def engine_check() -> Iterator[None]:
+    """While an engine step's check evaluates a claim's function at parameters of the engine's own (drawn
+    before): a check nested in that function draws parameters of another depth (see
+    :meth:`Scene._engine_params`, :meth:`.free.FreeScene._engine_letters`)."""
+    ENGINE_CHECK_DEPTH[0] += 1
+    try:
+        yield
+    finally:
+        ENGINE_CHECK_DEPTH[0] -= 1
 
 
 def so_basis(n: int) -> list[tuple[int, int]]:

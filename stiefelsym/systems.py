@@ -660,7 +660,8 @@ def _check_quadratic(s: Scene, value: Callable[[Point], Any], velocity: Point, l
         for (name, B), cb in zip(layout.coords, c):
             w[name] = w[name] + B * (cb * m)
         return value(w)
-    third = at(3) - at(2) * 3 + at(1) * 3 - value(zero_v)
+    with scene_module.engine_check():
+        third = at(3) - at(2) * 3 + at(1) * 3 - value(zero_v)
     if not s._field.is_zero(third):
         raise ValueError(f"euler_lagrange: {NOT_QUADRATIC}")
 

@@ -23,7 +23,7 @@ import symengine as se
 
 from stiefelsym.backends.fields import Dual, DualField, Field
 from stiefelsym.backends.matrix import CoordinateTracker, Mat, definite
-from stiefelsym.scene import (FRESH, check_generic_kind, user_name, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
+from stiefelsym.scene import (ENGINE_CHECK_DEPTH, FRESH, check_generic_kind, user_name, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
                               map_entries)
 from stiefelsym.free.algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, mark_moving, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
@@ -1044,8 +1044,9 @@ class FreeScene(PaperObjects):
             raise refuse(f"{tag}: an operator on a space other than one block of n×n, n×r, r×n or r×r matrices",
                          self.tracker)
         out = []
+        depth = ENGINE_CHECK_DEPTH[0]       # a check nested in another's function: letters of its own
         for t in ("y", "z"):
-            key = f"eng:{tag}:{t}[{e.row}x{e.col}]"
+            key = f"eng:{tag}:{t}[{e.row}x{e.col}]" + (f"@{depth}" if depth else "")
             if key not in self._named:
                 G, _ = letter_pair(key, f"{key}^T", e.row, e.col, f"{t}_{{{tag}}}", f"{t}_{{{tag}}}^{{T}}")
                 self._named[key] = G

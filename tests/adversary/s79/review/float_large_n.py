@@ -6,7 +6,7 @@ op(x) = Bx on gl(n) (not symmetric for <,>): ∇(½<x, Bx>) = ½(Bx + xB), so
   s79-f32-sharp-nonaffine-false: form_gradient of c ↦ <c, K> + <c, c> (not affine) equals the secant through
                          the basis: the step must refuse (its doc: an affine form)"""
 from stiefelsym import admissible, claim
-from stiefelsym.brackets import GL_N, lie_poisson, quadratic, linear, form_gradient
+from stiefelsym.brackets import GL_N, lie_poisson, quadratic, linear
 
 SZ = admissible(n_min=3, n_max=3)
 

@@ -12,7 +12,6 @@ gl(n), <a, b> = -½tr(ab), B generic.  Λ the Lie-Poisson tensor of gl(n): Λ(a,
   s79-quadval-state-contradiction:  the same with the stateful op
 """
 from stiefelsym import admissible, claim
-from stiefelsym.backends.matrix import comm
 from stiefelsym.brackets import GL_N, lie_poisson, quadratic, linear
 
 SZ = admissible(n_min=3, n_max=3)
