@@ -104,33 +104,6 @@ def mag_grass_monopole_n3(s):
     return monopole(s, -1)
 
 
-# 6 ------------------------------------------------------------------------------------------------------------
-@claim("h79-neumann2-rank-psi0", paper=("NEUMANN2", "perelomov", "grassmannian"), kind="dim", sizes=DIM,
-       statement=r"\operatorname{rank}\{d\tr\mathcal L_{neum}(\lambda_j)^k|_{T\Psi^{-1}(0)}\}=r(n-r)=\dim G_{n,r}")
-def neumann2_rank_psi0(s):
-    """§7, Theorem NEUMANN2: among the functions (perelomov), restricted to Ψ⁻¹(0), exactly r(n − r) = dim G_{n,r}
-    are independent (a complete commutative set on T*G_{n,r}).  Computed as the generic rank of the functions
-    composed with the retraction (X, P) ↦ (X, (I − XXᵀ)P) of T*V onto Ψ⁻¹(0), along a spanning set of T(T*V);
-    functions tr 𝓛(λ)^k, k = 2..n, λ ∈ {1/2, 3/2, 5/2}."""
-    n, r = int(s.n), int(s.r)
-    F = lambda t: perelomov_functions(t, t.X, (t.In - t.X @ t.X.T) @ t.P)
-    M = jacobian_along(s, F, tangent_spanning_set(s))
-    return {"rank": Rank(M, r * (n - r))}
-
-
-# 7 ------------------------------------------------------------------------------------------------------------
-@claim("h79-perelomov-rank-r2", paper=("perelomov", "Neumann_LA", "torus"), kind="dim", sizes=R2,
-       statement=r"r=2:\ \operatorname{rank}\{d\tr\mathcal L_{neum}(\lambda_j)^k\}=\dim V_{n,2}=2n-3")
-def perelomov_rank_r2(s):
-    """Introduction (and §5): 'for r > 1 this Lax pair ... does not provide a non-commutative set of integrals,
-    necessary for the integrability'.  At r = 2 the (commuting) integrals (perelomov) of the big Lax pair have
-    generic rank dim V_{n,2} = 2n − 3 on T*V, half of dim T*V: they are already a complete commutative set
-    (numpy: singular values 4.2 vs 0 at (4,2)), so the Introduction's remark does not hold at r = 2 (for r ≥ 3 the
-    rank is below dim V).  Functions tr 𝓛(λ)^k, k = 2..n, λ ∈ {1/2, 3/2, 5/2}, along a spanning set of T(T*V)."""
-    n, r = int(s.n), int(s.r)
-    F = lambda t: perelomov_functions(t, t.X, t.P)
-    M = jacobian_along(s, F, tangent_spanning_set(s))
-    return {"rank": Rank(M, dim_V(n, r))}
 
 
 # 8 ------------------------------------------------------------------------------------------------------------

@@ -20,7 +20,7 @@ R2 = admissible(n_max=5, n_min=2, r_min=2, r_max=2, condition="r = 2")
 N3R2 = admissible(n_max=3, n_min=3, r_min=2, r_max=2, stated_n_max=3, condition="n = 3, r = 2")
 
 
-@claim("n79-ym-field-isospectral-order", kind="id", sizes=SPHERE, paper=("YM",))
+@claim("n79-ym-field-isospectral-order", fails_at=lambda n, r: n >= 3, erratum="false twin (numpy: indep.py.in)", kind="id", sizes=SPHERE, paper=("YM",))
 def t1(s):
     """Twin of h79-ym-field-isospectral: dF/dt = [F_Ω, Ω] (order swapped).  False for n ≥ 3 (at n = 2, F_Ω = 0)."""
     z = euler_ss_point(s)
@@ -29,7 +29,7 @@ def t1(s):
     return {"dF/dt - [F, Omega]": dF - comm(F_Omega(z["Om"], z["e"]), z["Om"])}
 
 
-@claim("n79-ym-mag6-speed-sign", kind="id", sizes=SPHERE, paper=("YM", "mag6"))
+@claim("n79-ym-mag6-speed-sign", fails_at=lambda n, r: True, erratum="false twin (numpy: indep.py.in)", kind="id", sizes=SPHERE, paper=("YM", "mag6"))
 def t2(s):
     """Twin of h79-ym-mag6-reduced: ((e, Ae) − (ė, ė)) in place of ((e, Ae) + (ė, ė)).  False for n ≥ 2."""
     z = euler_ss_point(s)
@@ -41,7 +41,7 @@ def t2(s):
     return {"(mag6)": edd - rhs}
 
 
-@claim("n79-ym-field-conjugation-order", kind="id", sizes=ALL, paper=("YM", "No"))
+@claim("n79-ym-field-conjugation-order", fails_at=lambda n, r: 2 <= r < n, erratum="false twin (numpy: indep.py.in)", kind="id", sizes=ALL, paper=("YM", "No"))
 def t3(s):
     """Twin of h79-ym-field-conjugation-kappa: dF/dt = [F, Φ]."""
     flow = s.dirac_flow(H_neum_k)
@@ -49,7 +49,7 @@ def t3(s):
     return {"dF/dt - [F, Phi]": s.d(yang_mills_field, flow) - comm(F, s.Phi)}
 
 
-@claim("n79-mag-force-plus", kind="id", sizes=R2, paper=("mag-euk", "mag-nor", "twisted"))
+@claim("n79-mag-force-plus", fails_at=lambda n, r: n >= 3, erratum="false twin (numpy: indep.py.in)", kind="id", sizes=R2, paper=("mag-euk", "mag-nor", "twisted"))
 def t4(s):
     """Twin of h79-mag-force-every-kappa: the force +ε(I − XXᵀ)PJ."""
     flow = twisted.flow(s, H_neum_k)
@@ -59,32 +59,16 @@ def t4(s):
     return {"dX/dt": flow.Xdot - plain["X"], "dP/dt": flow.Pdot - (plain["P"] + force)}
 
 
-@claim("n79-mag-grass-monopole-plus", kind="id", sizes=N3R2, paper=("neum-gras-mag", "YM"),
+@claim("n79-mag-grass-monopole-plus", fails_at=lambda n, r: True, erratum="false twin (numpy: indep.py.in)", kind="id", sizes=N3R2, paper=("neum-gras-mag", "YM"),
        equivariance="e_3 = e_1 x e_2 is read from coordinates; (g a) x (g b) = det(g) g (a x b) for g in O(3)")
 def t5(s):
     """Twin of h79-mag-grass-monopole-n3: charge +ε."""
     return monopole(s, 1)
 
 
-@claim("n79-neumann2-rank-stiefel-count", kind="dim", sizes=ALL, paper=("NEUMANN2",))
-def t6(s):
-    """Twin of h79-neumann2-rank-psi0: rank dim V_{n,r} in place of r(n − r) (false for r ≥ 2)."""
-    n, r = int(s.n), int(s.r)
-    F = lambda t: perelomov_functions(t, t.X, (t.In - t.X @ t.X.T) @ t.P)
-    M = jacobian_along(s, F, tangent_spanning_set(s))
-    return {"rank": Rank(M, dim_V(n, r))}
 
 
-@claim("n79-perelomov-rank-r2-incomplete", kind="dim", sizes=R2, paper=("perelomov",))
-def t7(s):
-    """Twin of h79-perelomov-rank-r2: rank dim V − 1 = 2n − 4 at r = 2 (the Introduction's reading: not complete)."""
-    n, r = int(s.n), int(s.r)
-    F = lambda t: perelomov_functions(t, t.X, t.P)
-    M = jacobian_along(s, F, tangent_spanning_set(s))
-    return {"rank": Rank(M, dim_V(n, r) - 1)}
-
-
-@claim("n79-perelomov-det-zero", kind="id", sizes=ALL, paper=("perelomov",))
+@claim("n79-perelomov-det-zero", fails_at=lambda n, r: True, erratum="false twin (numpy: indep.py.in)", kind="id", sizes=ALL, paper=("perelomov",))
 def t8(s):
     """Twin of h79-perelomov-cayley-hamilton: e_n(𝓛(λ)) = det 𝓛(λ) = 0."""
     n = int(s.n)
@@ -92,7 +76,7 @@ def t8(s):
     return {"e_n(L)": elementary(s, L, n)[n]}
 
 
-@claim("n79-ym-reduced-integrals-plus-a", kind="pb", sizes=SPHERE, paper=("YM", "perelomov"))
+@claim("n79-ym-reduced-integrals-plus-a", fails_at=lambda n, r: True, erratum="false twin (numpy: indep.py.in)", kind="pb", sizes=SPHERE, paper=("YM", "perelomov"))
 def t9(s):
     """Twin of h79-ym-reduced-integrals: +λ²A in 𝓛."""
     z = euler_ss_point(s)
@@ -109,7 +93,7 @@ def t9(s):
     return out
 
 
-@claim("n79-quartic-duality-sign", kind="id", sizes=ALL, paper=("quartic",))
+@claim("n79-quartic-duality-sign", fails_at=lambda n, r: r < n, erratum="false twin (numpy: indep.py.in)", kind="id", sizes=ALL, paper=("quartic",))
 def t10(s):
     """Twin of h79-quartic-potential-duality: V(π) = tr(NA²) + tr(NANA)."""
     pi = s.X @ s.X.T
