@@ -42,7 +42,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Callable, Sequence
 
-from stiefelsym.ir.trace import primitive, same_scene_function, same_step_function
+from stiefelsym.ir.trace import primitive, same_inline_function, same_scene_function, same_step_function
 from stiefelsym.backends.matrix import Mat, comm
 from stiefelsym.scene import engine_check
 
@@ -253,14 +253,19 @@ class MatrixFunction:
                               f"{self.name}·{o.name}")
 
     def scaled(self, c: Callable[[Any], Scalar]) -> "MatrixFunction":
-        """c·h for a scalar c(s) of the scene."""
-        return MatrixFunction(lambda s, x: self.value(s, x) * c(s), lambda s, x: self.gradient(s, x) * c(s),
+        """c·h for a scalar c(s) of the scene (one function of it: its value and its gradient read the same c)."""
+        def c_(s: Any) -> Scalar:
+            return same_scene_function(c, s, c(s), "the scalar of MatrixFunction.scaled")
+        return MatrixFunction(lambda s, x: self.value(s, x) * c_(s), lambda s, x: self.gradient(s, x) * c_(s),
                               f"c·{self.name}")
 
 
 def linear(a: Callable[[Any], Mat], name: str = "<x, a>") -> MatrixFunction:
-    """h(x) = <x, a(s)>, ∇h = a."""
-    return MatrixFunction(lambda s, x: s.killing(x, a(s)), lambda s, x: a(s), name)
+    """h(x) = <x, a(s)>, ∇h = a (one function of the scene: the value and the gradient read the same a; a
+    callable whose state, or a test of its scene, makes it another at some call is refused, stop 79)."""
+    def a_(s: Any) -> Mat:
+        return same_scene_function(a, s, a(s), "the covector of brackets.linear")
+    return MatrixFunction(lambda s, x: s.killing(x, a_(s)), lambda s, x: a_(s), name)
 
 
 def quadratic(op: Callable[[Any, Mat], Mat] | None = None, name: str = "½<x, 𝔸x>") -> MatrixFunction:
@@ -277,10 +282,17 @@ def quadratic(op: Callable[[Any, Mat], Mat] | None = None, name: str = "½<x, �
         # every check of op in the claim is of one function, and its value at x is the gradient's (a stateful
         # op, or one that tests its argument, would have the check pass for another function than the one the
         # gradient uses)
-        same_step_function(zero, op_, "the operator of brackets.quadratic")
+        same_step_function(zero, op_, "the operator of brackets.quadratic", inline=0)
         return v + zero
 
-    return MatrixFunction(lambda s, x: s.killing(x, op_(s, x)) / 2, gradient, name)
+    def value(s: Any, x: Mat) -> Scalar:
+        v = op_(s, x)
+        # the op the claim's value computes with is the one the gradient's step checks (stop 79: an op that is
+        # B·u at the claim's own point y and u elsewhere made h(y) = ½<y, By> and ∇h = x both hold)
+        same_inline_function(v, op_, s, (x,), "the operator of brackets.quadratic")
+        return s.killing(x, v) / 2
+
+    return MatrixFunction(value, gradient, name)
 
 
 def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat, value: Mat) -> Mat:
@@ -344,6 +356,13 @@ def trace_power(k: int, *, so_scale: Callable[[Any], Scalar] | None = None,
     if k < 1:
         raise ValueError("trace_power: k >= 1")
 
+    def one(f: Callable[[Any], Any], what: str) -> Callable[[Any], Any]:
+        # the value and the gradient read the same function of the scene (stop 79)
+        return lambda s: same_scene_function(f, s, f(s), f"the {what} of brackets.trace_power")
+    so_scale = None if so_scale is None else one(so_scale, "so_scale")
+    sym_scale = None if sym_scale is None else one(sym_scale, "sym_scale")
+    shift = None if shift is None else one(shift, "shift")
+
     def M_of(s, x):
         h, v = skew(x), sym(x)
         M = (h * so_scale(s) if so_scale is not None else h) + (v * sym_scale(s) if sym_scale is not None else v)
@@ -400,7 +419,11 @@ class PoissonTensor:
     name: str = "Λ"
 
     def __call__(self, s: Any, x: Mat, a: Mat, b: Mat) -> Scalar:
-        return self.form(s, x, self.space.project(a), self.space.project(b))
+        value = self.form(s, x, self.space.project(a), self.space.project(b))
+        # every evaluation of the tensor in the claim, and those checked_tensor makes steps of, is one function
+        # of (x, a, b) (a form that tests its point made casimir_residual and checked_tensor two tensors, stop 79)
+        same_inline_function(value, self, s, (x, a, b), f"the tensor {self.name}")
+        return value
 
     def bracket(self, s: Any, f: MatrixFunction, g: MatrixFunction, x: Mat) -> Scalar:
         """{f, g}(x) = Λ(∇f, ∇g)|_x (gradients projected onto the space)."""
@@ -697,7 +720,7 @@ def checked_tensor(T: PoissonTensor) -> PoissonTensor:
         # its arguments) that is another form on some evaluations (Λ for the antisymmetry and degree,
         # Lie–Poisson for the Jacobi identity; Λ in its poisson_checks, another in a compatibility check of
         # T + T2, whose form is the sum of the parts' forms) would have each check pass for no one tensor
-        same_step_function(value, T, f"the tensor {T.name}", lambda o: getattr(o, "_parts", ("", ())))
+        same_step_function(value, T, f"the tensor {T.name}", lambda o: getattr(o, "_parts", ("", ())), inline=3)
         return value
     return PoissonTensor(T.space, form, T.degree, T.name)
 

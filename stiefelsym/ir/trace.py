@@ -1014,6 +1014,9 @@ class Trace:
         #: id(object) -> (object, node): the graph of the first evaluation of each object whose evaluations
         #: must be one function (see :func:`same_step_function`)
         self._one_function: dict[Any, tuple[Any, Any]] = {}
+        #: id(object) -> the calls of each object whose calls, inline or as an engine step's function, must be
+        #: one function (see :func:`same_inline_function`, :func:`_same_call`)
+        self._calls: dict[int, dict] = {}
         self._elements = False     # the generic elements of an Inverse statement are being made
         self._fresh = 0            # the fresh elements made so far (s.fresh)
         self._open = [0]           # the functions being traced (0: the claim), innermost last
@@ -1540,14 +1543,17 @@ class Trace:
         return Tracer(self, ref, ANY)
 
 
-def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], tuple] | None = None) -> None:
+def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], tuple] | None = None,
+                       inline: int | None = None) -> None:
     """In a trace: the function of the engine step that made ``value`` (an evaluation of ``obj``, such as a
     Poisson tensor) must be the same graph (up to the trace's numbering of functions) at every evaluation
     of the same object in the claim, as at its first: an object whose state (or a test of its arguments)
     makes it another function at some evaluations is refused.  ``parts(obj)``: (op, objects) when the
     object's function is the step ``op`` of its parts' functions (a sum: ("add", (T1, T2)); a multiple:
-    ("mul", (T,))), each part held to its own evaluations elsewhere in the claim; outside a trace,
-    nothing."""
+    ("mul", (T,))), each part held to its own evaluations elsewhere in the claim.  ``inline``: the object is
+    also called inline by engine code (:func:`same_inline_function`), with the step function's second
+    parameter as its argument (0) or that parameter's items 0 .. inline − 1 as its arguments; the step's
+    function is then held to those calls too.  Outside a trace, nothing."""
     if not _ACTIVE:
         return
     t = _ACTIVE[-1]
@@ -1573,6 +1579,113 @@ def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], t
                 hold(part, x.i)
 
     hold(obj, body.i)
+    if inline is not None:
+        # the step's function, as a graph of its scene and arguments, is the form every inline call of the object
+        # in the claim must have (same_inline_function)
+        number = g.args[k][0]
+        params = _parameters(g, body.i, number, inline)
+        _same_call(t, obj, body.i, [_with_own(g, params[0])] + params[1:], what)
+
+
+def _with_own(g: Graph, i: int) -> tuple:
+    """A scene's node, with the claim's own scene standing for it (a value a function keeps from the claim's scene
+    is the same value on every scene the function is called on)."""
+    own = g.index.get(("scene", (0,)))
+    return (i,) if own is None or i == own else (i, own)
+
+
+def _parameters(g: Graph, body: int, number: int, inline: int) -> list[int]:
+    """The nodes of the function ``number``'s scene and arguments under ``body`` (-1 for one it does not read):
+    its second parameter (inline = 0), or the items 0 .. inline − 1 of that parameter (a tuple of arguments)."""
+    found: dict[Any, int] = {}
+    seen: set[int] = set()
+    stack = [body]
+    while stack:
+        i = stack.pop()
+        if i in seen:
+            continue
+        seen.add(i)
+        op, a = g.ops[i], g.args[i]
+        if op == "scene" and a[0] == number:
+            found["scene"] = i
+        elif op == "param" and a[0] == number and a[1] == 1:
+            found["param"] = i
+        stack.extend(g.refs(i))
+    out = [found.get("scene", -1)]
+    if inline == 0:
+        return out + [found.get("param", -1)]
+    p = found.get("param")
+    for j in range(inline):
+        out.append(-1 if p is None else g.index.get(("item", (_ref(p), j)), -1))
+    return out
+
+
+def same_inline_function(value: Any, obj: Any, scene: Any, args: tuple, what: str) -> None:
+    """In a trace: ``value`` is obj(scene, *args), called by engine code inline (the value ½<x, op(x)> of
+    brackets.quadratic, a tensor's Λ(a, b)|_x): every such call of the object, and the function of the engine
+    step that checks it where the claim hands it to one (:func:`same_step_function` with ``inline``), must be the
+    same graph of its scene and arguments, as at the first; else the step would check another function than
+    the one the claim computes with, or two calls would be two functions (an op that is B·u at the claim's own
+    point and u elsewhere, or one with state, stop 79).  Outside a trace, nothing."""
+    if not _ACTIVE:
+        return
+    t = _ACTIVE[-1]
+    if (type(scene) is not TraceScene or scene._t is not t or (type(value) is Tracer and value._t is not t)
+            or not all(type(x) is Tracer and x._t is t for x in args)):
+        t.refuse(f"{what}: a value of the claim's scene, at matrices of it, on the scene")
+    out = t.arg(value)
+    if type(out) in (int, Fraction):    # a constant value (a number the call returned) is a node too
+        out = t.g.add("const", (out,))
+    if type(out) is not Ref:
+        t.refuse(f"{what}: a value of the claim's scene, at matrices of it, on the scene")
+    _same_call(t, obj, out.i, [_with_own(t.g, scene._r.i)] + [x._r.i for x in args], what)
+
+
+def _same_call(t: "Trace", obj: Any, out: int, args: list, what: str) -> None:
+    """Hold a call of ``obj`` (its value ``out``, a graph of the nodes ``args``: a node, or a tuple of nodes that
+    stand for one argument) to one function: every call is compared with the first whose arguments are distinct
+    nodes (the step's function, whose parameters are), a call that passes one node as two arguments (Λ(g, g))
+    with that call's arguments merged the same way; calls of one such pattern made before there is one are
+    compared with it when it comes, and with each other."""
+    entries = [a if type(a) is tuple else (a,) for a in args]
+    # a parameter the step's function does not read is -1: a placeholder of its own, never one of another's
+    entries = [tuple(x if x >= 0 else -1 - 1000 * k for x in e) for k, e in enumerate(entries)]
+    labels = [next(j for j in range(k + 1) if entries[j][0] == entries[k][0]) for k in range(len(entries))]
+    calls = t._calls.setdefault(id(obj), {"obj": obj, "ref": None, "patterns": {}, "pending": []})
+    if calls["obj"] is not obj:
+        calls.update(obj=obj, ref=None, patterns={}, pending=[])
+    call = (out, entries, tuple(labels))
+
+    def compare(ref: tuple, c: tuple) -> None:
+        r_out, r_entries, r_labels = ref
+        c_out, c_entries, c_labels = c
+        if len(r_entries) != len(c_entries):
+            ok = False
+        else:
+            classes = sorted(set(c_labels))
+            merged = [tuple(x for k, e in enumerate(r_entries) if c_labels[k] == cl for x in e) for cl in classes]
+            ok = t.same_graph([r_out], merged, [c_out], [c_entries[cl] for cl in classes])
+        if not ok:
+            t.refuse(f"{what} traces to another graph at one of its calls than at its first (a test of its "
+                     "arguments, or its state, changed it): a statement about one function")
+
+    if labels == list(range(len(labels))):          # distinct arguments
+        if calls["ref"] is None:
+            calls["ref"] = call
+            for c in calls["pending"]:
+                compare(call, c)
+            calls["pending"] = []
+        else:
+            compare(calls["ref"], call)
+        return
+    if calls["ref"] is not None:
+        compare(calls["ref"], call)
+        return
+    calls["pending"].append(call)
+    first = calls["patterns"].setdefault(tuple(labels), call)
+    if first is not call and not t.same_graph([first[0]], list(first[1]), [out], entries):
+        t.refuse(f"{what} traces to another graph at one of its calls than at its first (a test of its "
+                 "arguments, or its state, changed it): a statement about one function")
 
 
 def same_scene_function(f: Any, scene: Any, value: Any, what: str) -> Any:
@@ -1580,17 +1693,19 @@ def same_scene_function(f: Any, scene: Any, value: Any, what: str) -> Any:
     claim's and those of the functions it differentiates), must be the same graph of its scene at every
     call of the same object, as at its first (a function whose state makes it another at some calls is
     refused); returns ``value``; outside a trace (or for a value that is not traced), nothing is checked."""
-    if not _ACTIVE or type(scene) is not TraceScene or type(value) is not Tracer:
+    if not _ACTIVE or type(scene) is not TraceScene or type(value) not in (Tracer, int, Fraction):
         return value
     t = _ACTIVE[-1]
-    if scene._t is not t or value._t is not t:
+    if scene._t is not t or (type(value) is Tracer and value._t is not t):
         return value
+    # a number the call returned is a node too (a function that returns 2, then 0, is not one function)
+    node = value._r.i if type(value) is Tracer else t.g.add("const", (value,)).i
     key = ("scene function", id(f))
     hit = t._one_function.get(key)      # type: ignore[call-overload]
     # the claim's own scene stands for the scene of every call (a value the function keeps from the claim's
     # scene, a constant on the other scenes, is the same value there)
     own = t.g.index.get(("scene", (0,)))
-    here = ((scene._r.i,) if own is None else (scene._r.i, own), value._r.i)
+    here = ((scene._r.i,) if own is None else (scene._r.i, own), node)
     if hit is None or hit[0] is not f:
         t._one_function[key] = (f, here)    # type: ignore[index]
     elif not t.same_graph([hit[1][1]], [hit[1][0]], [here[1]], [here[0]]):

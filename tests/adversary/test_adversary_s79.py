@@ -70,3 +70,30 @@ def test_the_dirac_bracket_of_more_than_two_constraints(method):
         recs = _records(REVIEW / "dirac_more_constraints.py", "--method", method)
         assert recs[("s79-dirac4-casimir-true", 3, 1)]["verdict"] in ("checked", "numeric")
         assert recs[("s79-dirac4-equals2-false", 3, 1)]["verdict"] == "fails"
+
+
+ONE_FUNCTION = "a statement about one function"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
+def test_the_value_of_quadratic_and_the_checked_operator_are_one_function(method):
+    """Review W2: quadratic's value ½<y, op(y)> called op inline, apart from the step that checks op: an op that
+    is B·u at the claim's own y and u elsewhere (or B·u at its first call) made 'h(y) = ½<y, By>' and
+    '{h, <·,b>} = 0' both proved, free for all n, r.  Review W2b: the same through linear(a), f.scaled(c) (a
+    callable read once by the value, once by the gradient) and a tensor evaluated inline next to checked_tensor.
+    Every call of such an object, inline or as a step's function, is now held to one graph of its arguments."""
+    for name in ("quadratic_value_call.py", "matrixfunction_state.py", "tensor_raw_call.py"):
+        for key, rec in _records(REVIEW / name, "--method", method).items():
+            assert rec["verdict"] == "error" and ONE_FUNCTION in rec["message"], (name, key, rec["verdict"])
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_calls_that_pass_one_node_as_two_arguments(method):
+    """The stop's own attempt on that change: a call Λ(g, g) is compared with a call at distinct covectors merged
+    the same way, so a pure tensor passes (Λ(g, g) = 0 proved) and one that tests whether its covectors are one
+    object, or changes at its second such call, is refused."""
+    for (cid, n, r), rec in _records(HERE / "own" / "aliased_calls.py", "--method", method).items():
+        if cid.endswith("-true"):
+            assert rec["verdict"] in ("proved", "checked"), (cid, n, r, rec["verdict"])
+        else:
+            assert rec["verdict"] == "error" and ONE_FUNCTION in rec["message"], (cid, n, r, rec["verdict"])

@@ -1,4 +1,5 @@
-import os, sys
+import os
+import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from stiefelsym import admissible, claim
 from stiefelsym import twisted
