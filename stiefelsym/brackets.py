@@ -85,19 +85,26 @@ def metric_constraints(t: Any) -> list[Mat]:
     return [t.X.T @ t.X - t.Ir, t.X.T @ t.Ainv @ t.P + t.P.T @ t.Ainv @ t.X]
 
 
-def _scalar_constraints(constraints: Callable[[Any], Sequence[Mat]], s: Any) -> list[Function]:
+def _scalar_constraints(constraints: Callable[[Any], Sequence[Mat]], s: Any, keys: dict) -> list[Function]:
     """The entries on and above the diagonal of every matrix of the list ``constraints(s)`` (each square), as
     scalar functions: for a symmetric matrix, each of its conditions once.  (Every matrix of the list: stop 79
-    found the first two alone taken, whatever the list's length.)"""
+    found the first two alone taken, whatever the list's length.)  The list is one function of the scene at
+    every call, its length and each of its matrices (``keys``: the bracket's objects that stand for them)."""
+    def held(t: Any, k: int | None) -> Any:
+        mats = constraints(t)
+        value = len(mats) if k is None else mats[k]
+        return same_scene_function(keys.setdefault(k, object()), t, value, "the constraints of dirac_bracket_for")
     out = []
-    for k, M in enumerate(constraints(s)):
+    count = held(s, None)
+    for k in range(count if type(count) is int else len(constraints(s))):
+        M = held(s, k)
         rows, cols = (int(x) for x in M.shape)
         if rows != cols:
             raise ValueError(f"dirac_bracket_for: constraint {k + 1} is a {rows}x{cols} matrix; the constraints are "
                              "symmetric (square) matrices, read by their entries on and above the diagonal")
         for i in range(rows):
             for j in range(i, rows):
-                out.append(lambda t, k=k, i=i, j=j: constraints(t)[k][i, j])
+                out.append(lambda t, k=k, i=i, j=j: held(t, k)[i, j])
     return out
 
 
@@ -106,8 +113,10 @@ def dirac_bracket_for(constraints: Callable[[Any], Sequence[Mat]], name: str = "
     scalar constraints F_i (the entries on and above the diagonal of each matrix of the list ``constraints``,
     symmetric square matrices: a lower triangle is not read), C the inverse of ({F_i, F_j}_0); only the
     canonical bracket of the scene is used."""
+    keys: dict = {}
+
     def evaluate(s: Any, F: Function, G: Function) -> Scalar:
-        Fs = _scalar_constraints(constraints, s)
+        Fs = _scalar_constraints(constraints, s, keys)
         m = len(Fs)
         C0 = s.mat([[s.canonical_bracket(Fi, Fj) for Fj in Fs] for Fi in Fs], ("cond", "cond"))
         C = C0.inv()
@@ -419,9 +428,13 @@ class PoissonTensor:
     name: str = "Λ"
 
     def __call__(self, s: Any, x: Mat, a: Mat, b: Mat) -> Scalar:
-        value = self.form(s, x, self.space.project(a), self.space.project(b))
-        # every evaluation of the tensor in the claim, and those checked_tensor makes steps of, is one function
-        # of (x, a, b) (a form that tests its point made casimir_residual and checked_tensor two tensors, stop 79)
+        return self._evaluate(s, x, self.space.project(a), self.space.project(b))
+
+    def _evaluate(self, s: Any, x: Mat, a: Mat, b: Mat) -> Scalar:
+        """form(s, x, a, b), held to one function: every evaluation of the tensor in the claim (inline, through
+        checked_tensor's steps, or as a part of a sum or a multiple) is one function of (x, a, b) (a form that
+        tests its point made casimir_residual and checked_tensor two tensors, stop 79)."""
+        value = self.form(s, x, a, b)
         same_inline_function(value, self, s, (x, a, b), f"the tensor {self.name}")
         return value
 
@@ -437,14 +450,16 @@ class PoissonTensor:
     def __add__(self, o: "PoissonTensor") -> "PoissonTensor":
         if o.space != self.space:
             raise TypeError(f"a sum of tensors on {self.space.name} and {o.space.name}")
-        out = PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) + o.form(s, x, a, b),
+        out = PoissonTensor(self.space, lambda s, x, a, b: self._evaluate(s, x, a, b) + o._evaluate(s, x, a, b),
                             max(self.degree, o.degree), f"{self.name} + {o.name}")
         object.__setattr__(out, "_parts", ("add", (self, o)))    # held to the parts' own evaluations (checked_tensor)
         return out
 
     def scaled(self, c: Callable[[Any], Scalar]) -> "PoissonTensor":
         """c(s)·Λ for a scalar of the scene (a pencil λ1Λ1 + λ2Λ2 is ``T1.scaled(l1) + T2.scaled(l2)``)."""
-        out = PoissonTensor(self.space, lambda s, x, a, b: self.form(s, x, a, b) * c(s), self.degree,
+        def c_(s: Any) -> Scalar:
+            return same_scene_function(c, s, c(s), "the scalar of PoissonTensor.scaled")
+        out = PoissonTensor(self.space, lambda s, x, a, b: self._evaluate(s, x, a, b) * c_(s), self.degree,
                             f"c·{self.name}")
         object.__setattr__(out, "_parts", ("mul", (self,)))      # held to its part's own evaluations
         return out

@@ -1584,14 +1584,7 @@ def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], t
         # in the claim must have (same_inline_function)
         number = g.args[k][0]
         params = _parameters(g, body.i, number, inline)
-        _same_call(t, obj, body.i, [_with_own(g, params[0])] + params[1:], what)
-
-
-def _with_own(g: Graph, i: int) -> tuple:
-    """A scene's node, with the claim's own scene standing for it (a value a function keeps from the claim's scene
-    is the same value on every scene the function is called on)."""
-    own = g.index.get(("scene", (0,)))
-    return (i,) if own is None or i == own else (i, own)
+        _same_call(t, obj, body.i, params, what)
 
 
 def _parameters(g: Graph, body: int, number: int, inline: int) -> list[int]:
@@ -1634,58 +1627,79 @@ def same_inline_function(value: Any, obj: Any, scene: Any, args: tuple, what: st
             or not all(type(x) is Tracer and x._t is t for x in args)):
         t.refuse(f"{what}: a value of the claim's scene, at matrices of it, on the scene")
     out = t.arg(value)
-    if type(out) in (int, Fraction):    # a constant value (a number the call returned) is a node too
-        out = t.g.add("const", (out,))
-    if type(out) is not Ref:
+    if type(out) not in (Ref, int, Fraction):
         t.refuse(f"{what}: a value of the claim's scene, at matrices of it, on the scene")
-    _same_call(t, obj, out.i, [_with_own(t.g, scene._r.i)] + [x._r.i for x in args], what)
+    # a constant value (a number the call returned) is compared as a number (no node: the graph is the claim's)
+    _same_call(t, obj, out.i if type(out) is Ref else ("number", out), [scene._r.i] + [x._r.i for x in args], what)
 
 
-def _same_call(t: "Trace", obj: Any, out: int, args: list, what: str) -> None:
-    """Hold a call of ``obj`` (its value ``out``, a graph of the nodes ``args``: a node, or a tuple of nodes that
-    stand for one argument) to one function: every call is compared with the first whose arguments are distinct
-    nodes (the step's function, whose parameters are), a call that passes one node as two arguments (Λ(g, g))
-    with that call's arguments merged the same way; calls of one such pattern made before there is one are
-    compared with it when it comes, and with each other."""
-    entries = [a if type(a) is tuple else (a,) for a in args]
+def _same_call(t: "Trace", obj: Any, out: Any, args: list, what: str, key: Any = None) -> None:
+    """Hold a call of ``obj`` (its value ``out``, a graph of the nodes ``args``: the scene it is called on, then its
+    arguments; or ("number", q), a constant it returned) to one function.
+
+    Every call is compared with the first whose arguments are distinct nodes (the step's function, whose
+    parameters are); a call that passes one node as two arguments (Λ(g, g)) with that call's arguments merged
+    the same way (calls of one such pattern made before there is one are compared with it when it comes, and
+    with each other).  The scene: a call on the claim's own scene cannot tell a value the function keeps from
+    the claim's scene from one it reads from the scene it is given, so it is compared with a call on another
+    scene with the claim's scene standing for that one; calls on other scenes (a derivative's, a point's own)
+    are compared with each other as they are, where s.X kept from the claim's scene is a constant and t.X is
+    not (stop 79)."""
+    g = t.g
+    own = g.index.get(("scene", (0,)))
+    entries = [(a,) for a in args]
     # a parameter the step's function does not read is -1: a placeholder of its own, never one of another's
     entries = [tuple(x if x >= 0 else -1 - 1000 * k for x in e) for k, e in enumerate(entries)]
-    labels = [next(j for j in range(k + 1) if entries[j][0] == entries[k][0]) for k in range(len(entries))]
-    calls = t._calls.setdefault(id(obj), {"obj": obj, "ref": None, "patterns": {}, "pending": []})
+    labels = tuple(next(j for j in range(k + 1) if entries[j][0] == entries[k][0]) for k in range(len(entries)))
+    on_own = own is not None and args[0] == own
+    calls = t._calls.setdefault(key if key is not None else id(obj),
+                                {"obj": obj, "ref": {}, "patterns": {}, "pending": []})
     if calls["obj"] is not obj:
-        calls.update(obj=obj, ref=None, patterns={}, pending=[])
-    call = (out, entries, tuple(labels))
+        calls.update(obj=obj, ref={}, patterns={}, pending=[])
+    call = (out, entries, labels, on_own)
 
-    def compare(ref: tuple, c: tuple) -> None:
-        r_out, r_entries, r_labels = ref
-        c_out, c_entries, c_labels = c
-        if len(r_entries) != len(c_entries):
-            ok = False
-        else:
-            classes = sorted(set(c_labels))
-            merged = [tuple(x for k, e in enumerate(r_entries) if c_labels[k] == cl for x in e) for cl in classes]
-            ok = t.same_graph([r_out], merged, [c_out], [c_entries[cl] for cl in classes])
-        if not ok:
-            t.refuse(f"{what} traces to another graph at one of its calls than at its first (a test of its "
-                     "arguments, or its state, changed it): a statement about one function")
-
-    if labels == list(range(len(labels))):          # distinct arguments
-        if calls["ref"] is None:
-            calls["ref"] = call
-            for c in calls["pending"]:
-                compare(call, c)
-            calls["pending"] = []
-        else:
-            compare(calls["ref"], call)
-        return
-    if calls["ref"] is not None:
-        compare(calls["ref"], call)
-        return
-    calls["pending"].append(call)
-    first = calls["patterns"].setdefault(tuple(labels), call)
-    if first is not call and not t.same_graph([first[0]], list(first[1]), [out], entries):
+    def refuse() -> None:
         t.refuse(f"{what} traces to another graph at one of its calls than at its first (a test of its "
                  "arguments, or its state, changed it): a statement about one function")
+
+    def scene_entries(r_entries: list, r_own: bool, c_entries: list, c_own: bool) -> tuple[list, list]:
+        # the claim's scene stands for the other call's scene where exactly one of the two is on it
+        if r_own and not c_own:
+            c_entries = [c_entries[0] + (own,)] + c_entries[1:]
+        elif c_own and not r_own:
+            r_entries = [r_entries[0] + (own,)] + r_entries[1:]
+        return r_entries, c_entries
+
+    def compare(ref: tuple, c: tuple) -> None:
+        r_out, r_entries, _r_labels, r_own = ref
+        c_out, c_entries, c_labels, c_own = c
+        if len(r_entries) != len(c_entries):
+            refuse()
+        r_entries, c_entries = scene_entries(list(r_entries), r_own, list(c_entries), c_own)
+        classes = sorted(set(c_labels))
+        merged = [tuple(x for k, e in enumerate(r_entries) if c_labels[k] == cl for x in e) for cl in classes]
+        if type(r_out) is tuple or type(c_out) is tuple:
+            if r_out != c_out:
+                refuse()
+        elif not t.same_graph([r_out], merged, [c_out], [c_entries[cl] for cl in classes]):
+            refuse()
+
+    refs = calls["ref"]
+    if labels == tuple(range(len(labels))):         # distinct arguments
+        for ref in refs.values():
+            compare(ref, call)
+        if on_own not in refs:
+            refs[on_own] = call
+            for c in calls["pending"]:
+                compare(call, c)
+        return
+    for ref in refs.values():
+        compare(ref, call)
+    calls["pending"].append(call)
+    first = calls["patterns"].setdefault((labels, on_own), call)
+    if first is not call and (first[0] != out if type(out) is tuple or type(first[0]) is tuple
+                              else not t.same_graph([first[0]], list(first[1]), [out], entries)):
+        refuse()
 
 
 def same_scene_function(f: Any, scene: Any, value: Any, what: str) -> Any:
@@ -1699,18 +1713,11 @@ def same_scene_function(f: Any, scene: Any, value: Any, what: str) -> Any:
     if scene._t is not t or (type(value) is Tracer and value._t is not t):
         return value
     # a number the call returned is a node too (a function that returns 2, then 0, is not one function)
-    node = value._r.i if type(value) is Tracer else t.g.add("const", (value,)).i
-    key = ("scene function", id(f))
-    hit = t._one_function.get(key)      # type: ignore[call-overload]
-    # the claim's own scene stands for the scene of every call (a value the function keeps from the claim's
-    # scene, a constant on the other scenes, is the same value there)
-    own = t.g.index.get(("scene", (0,)))
-    here = ((scene._r.i,) if own is None else (scene._r.i, own), node)
-    if hit is None or hit[0] is not f:
-        t._one_function[key] = (f, here)    # type: ignore[index]
-    elif not t.same_graph([hit[1][1]], [hit[1][0]], [here[1]], [here[0]]):
-        t.refuse(f"{what} traces to another graph of its scene at one of its calls than at its first (its state, "
-                 "or a test of its scene, changed it): a statement about one function")
+    node = value._r.i if type(value) is Tracer else ("number", value)
+    # every call is the same graph of its scene; the claim's own scene stands for another call's scene where
+    # one of the two is on it (a value the function keeps from the claim's scene is the same value there), and
+    # calls on two other scenes are compared as they are (see _same_call)
+    _same_call(t, f, node, [scene._r.i], what.rstrip(), key=("scene function", id(f)))
     return value
 
 
