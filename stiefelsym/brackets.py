@@ -291,7 +291,7 @@ def quadratic(op: Callable[[Any, Mat], Mat] | None = None, name: str = "Â½<x, ð
         # every check of op in the claim is of one function, and its value at x is the gradient's (a stateful
         # op, or one that tests its argument, would have the check pass for another function than the one the
         # gradient uses)
-        same_step_function(zero, op_, "the operator of brackets.quadratic", inline=0)
+        same_step_function(zero, op_, "the operator of brackets.quadratic", inline=True)
         return v + zero
 
     def value(s: Any, x: Mat) -> Scalar:

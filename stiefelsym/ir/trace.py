@@ -1544,16 +1544,15 @@ class Trace:
 
 
 def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], tuple] | None = None,
-                       inline: int | None = None) -> None:
+                       inline: bool = False) -> None:
     """In a trace: the function of the engine step that made ``value`` (an evaluation of ``obj``, such as a
     Poisson tensor) must be the same graph (up to the trace's numbering of functions) at every evaluation
     of the same object in the claim, as at its first: an object whose state (or a test of its arguments)
     makes it another function at some evaluations is refused.  ``parts(obj)``: (op, objects) when the
     object's function is the step ``op`` of its parts' functions (a sum: ("add", (T1, T2)); a multiple:
     ("mul", (T,))), each part held to its own evaluations elsewhere in the claim.  ``inline``: the object is
-    also called inline by engine code (:func:`same_inline_function`), with the step function's second
-    parameter as its argument (0) or that parameter's items 0 .. inline − 1 as its arguments; the step's
-    function is then held to those calls too.  Outside a trace, nothing."""
+    also called inline by engine code (:func:`same_inline_function`) at one argument, the step function's
+    second parameter; the step's function is then held to those calls too.  Outside a trace, nothing."""
     if not _ACTIVE:
         return
     t = _ACTIVE[-1]
@@ -1579,18 +1578,18 @@ def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], t
                 hold(part, x.i)
 
     hold(obj, body.i)
-    if inline is not None:
+    if inline:
         # the step's function, as a graph of its scene and arguments, is the form every inline call of the object
         # in the claim must have (same_inline_function)
         number = g.args[k][0]
-        params = _parameters(g, body.i, number, inline)
+        params = _parameters(g, body.i, number)
         _same_call(t, obj, body.i, params, what)
 
 
-def _parameters(g: Graph, body: int, number: int, inline: int) -> list[int]:
-    """The nodes of the function ``number``'s scene and arguments under ``body`` (-1 for one it does not read):
-    its second parameter (inline = 0), or the items 0 .. inline − 1 of that parameter (a tuple of arguments)."""
-    found: dict[Any, int] = {}
+def _parameters(g: Graph, body: int, number: int) -> list[int]:
+    """The nodes of the function ``number``'s scene and second parameter under ``body`` (-1 for one it does not
+    read)."""
+    found: dict[str, int] = {}
     seen: set[int] = set()
     stack = [body]
     while stack:
@@ -1604,13 +1603,7 @@ def _parameters(g: Graph, body: int, number: int, inline: int) -> list[int]:
         elif op == "param" and a[0] == number and a[1] == 1:
             found["param"] = i
         stack.extend(g.refs(i))
-    out = [found.get("scene", -1)]
-    if inline == 0:
-        return out + [found.get("param", -1)]
-    p = found.get("param")
-    for j in range(inline):
-        out.append(-1 if p is None else g.index.get(("item", (_ref(p), j)), -1))
-    return out
+    return [found.get("scene", -1), found.get("param", -1)]
 
 
 def same_inline_function(value: Any, obj: Any, scene: Any, args: tuple, what: str) -> None:

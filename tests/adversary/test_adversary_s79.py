@@ -91,7 +91,8 @@ def test_the_value_of_quadratic_and_the_checked_operator_are_one_function(method
 def test_calls_that_pass_one_node_as_two_arguments(method):
     """The stop's own attempt on that change: a call Λ(g, g) is compared with a call at distinct covectors merged
     the same way, so a pure tensor passes (Λ(g, g) = 0 proved) and one that tests whether its covectors are one
-    object, or changes at its second such call, is refused."""
+    object, or changes at its second such call, is refused; so is a quadratic's op that tests its scene (B·u
+    on the claim's scene, where the value is taken, u on the check's)."""
     for (cid, n, r), rec in _records(HERE / "own" / "aliased_calls.py", "--method", method).items():
         if cid.endswith("-true"):
             assert rec["verdict"] in ("proved", "checked"), (cid, n, r, rec["verdict"])

@@ -49,3 +49,16 @@ def alias_state(s):
         return t.killing(y, K) if len(calls) > 1 else _lp(t, y, p, q)
     T = PoissonTensor(GL_N, form, 1, "Λ")
     return {"Λ(g, g)": T(s, x, g, g), "Λ(h, h) − <x, K>": T(s, x, h, h) - s.killing(x, K)}
+
+
+@claim("s79o-scene-test-false", kind="id", sizes=SZ)
+def scene_test(s):
+    """An op that tests its scene: B·u on the claim's own scene (where the value is taken), u on any other (the
+    scene of the check's function): 'h(y) = ½<y, By>' next to the gradient's check (FALSE for the op the engine
+    checks: refused)."""
+    from stiefelsym.brackets import linear, lie_poisson, quadratic
+    B = s.generic("B", "n", "n")
+    x, b, y = GL_N.generic(s, "x"), GL_N.generic(s, "b"), GL_N.generic(s, "y")
+    h = quadratic(lambda t, u: B @ u if t is s else u)
+    return {"h(y) − ½<y, By>": h(s, y) - s.killing(y, B @ y) / 2,
+            "{h, <.,b>}(x)": lie_poisson(GL_N).bracket(s, h, linear(lambda t: b), x)}
