@@ -1017,6 +1017,9 @@ class Trace:
         #: id(object) -> the calls of each object whose calls, inline or as an engine step's function, must be
         #: one function (see :func:`same_inline_function`, :func:`_same_call`)
         self._calls: dict[int, dict] = {}
+        #: (id(function), the shape of its argument) -> (function, body) at its first use by a step that shapes
+        #: its parameter like one of its arguments (see :meth:`function`)
+        self._like_functions: dict[tuple, tuple[Any, Any]] = {}
         self._elements = False     # the generic elements of an Inverse statement are being made
         self._fresh = 0            # the fresh elements made so far (s.fresh)
         self._open = [0]           # the functions being traced (0: the claim), innermost last
@@ -1184,8 +1187,79 @@ class Trace:
         finally:
             self._open.pop()
         ref = self.g.add("fn", (k, arity, body))
+        if like is not None:
+            # traced afresh at each use, its parameter shaped like the step's argument: at a use with an argument
+            # of the same shape as at its first, it must be the same graph (up to the numbering of functions); a
+            # function whose state changed between two steps (a kinetic energy c·T with c flipped between two
+            # euler_lagrange calls) would have each step see another function (stop 79's review, W3b)
+            sig = _like_signature(like)
+            first = self._like_functions.setdefault((id(f), sig), (f, body))
+            if first[0] is not f:
+                self._like_functions[(id(f), sig)] = (f, body)
+            elif first[1] is not body and not self._same_body(first[1], body):
+                return self.refuse("a function that traces to another graph when it is used again (its state "
+                                   "changed between two uses)")
         self._functions[id(f)] = (f, ref, out, like)
         return ref, out
+
+    def _same_body(self, a: Any, b: Any) -> bool:
+        """Whether two traced functions' bodies (a node, or a structure of nodes) are the same graph, up to the
+        numbering of functions."""
+        na: list[int] = []
+        nb: list[int] = []
+
+        def skeleton(x: Any, nodes: list[int]) -> Any:
+            if type(x) is Ref:
+                nodes.append(x.i)
+                return "node"
+            if type(x) is tuple:
+                return tuple(skeleton(y, nodes) for y in x)
+            return (type(x).__name__, x)
+
+        return skeleton(a, na) == skeleton(b, nb) and self.same_graph(na, [], nb, [])
+
+    def check_calls(self) -> None:
+        """Hold every object the engine calls at several places (:func:`same_inline_function`,
+        :func:`same_step_function` with ``inline``, :func:`same_scene_function`) to one function, once the
+        claim's calls are all made: refuse the claim when they are not.
+
+        The calls of an object fall in two kinds: those on the claim's own scene, and those on another scene
+        (an engine step's function at its parameters, a derivative's scene, a point's own).  A call on the
+        claim's scene cannot tell a value the function keeps from the claim's scene from one it reads from the
+        scene it is given, so it stands for the other scene when one of two compared calls is on it; calls on
+        other scenes are compared as they are, where s.X kept from the claim's scene is a constant and t.X is
+        not (stop 79).  One call at distinct arguments is the reference, on another scene when the object is
+        called on one (the first that serves of the first few): every call of the object is the reference's
+        function at its scene and arguments (:func:`_holds`).  A call that passes one node as two arguments,
+        Λ(g, g), is compared with the reference's arguments merged the same way; a call whose argument is also a
+        node the function computes (Λ(a·b; a, b), whose form makes a·b) by substitution into the reference
+        (stop 80: compared by shape, it was refused).  Calls with one node as two arguments are also held to the
+        first call of their pattern, which is all there is to hold them to when no call has distinct ones."""
+        own = self.g.index.get(("scene", (0,)))
+        for calls in self._calls.values():
+            cs, what = calls["calls"], calls["what"]
+            ok = True
+            for on_own in (False, True):
+                # a reference on another scene when there is one (a call on the claim's scene is the reference's
+                # function at it exactly, the claim's scene standing for the reference's: nothing is merged
+                # there); the first few candidates (a claim whose calls are one function has its first serve,
+                # unless that call's argument is a node the function computes)
+                refs = [c for c in cs if c[3] == on_own and c[2] == tuple(range(len(c[2])))][:8]
+                if refs:
+                    ok = any(all(_holds(self, ref, c, own) for c in cs) for ref in refs)
+                    break
+            if ok:
+                first: dict[tuple, tuple] = {}
+                for c in cs:
+                    if c[2] == tuple(range(len(c[2]))):
+                        continue
+                    f = first.setdefault((c[2], c[3]), c)
+                    if f is not c and not _holds(self, f, c, own):
+                        ok = False
+                        break
+            if not ok:
+                self.refuse(f"{what} traces to another graph at one of its calls than at its first (a test of "
+                            "its arguments, or its state, changed it): a statement about one function")
 
     def check_parameters(self) -> None:
         """Refuse a graph in which a function's body, or the claim's checks, read a parameter (or the scene)
@@ -1543,6 +1617,19 @@ class Trace:
         return Tracer(self, ref, ANY)
 
 
+def _like_signature(like: Any) -> Any:
+    """The shape of a step's argument a function's parameter is made like (:meth:`Trace.mirror`): its kinds and
+    shapes, the keys of its dicts."""
+    if isinstance(like, Tracer):
+        return ("value", like._kind, like._shape)
+    if type(like) in (list, tuple, Gradient):
+        return (type(like).__name__, tuple(_like_signature(x) for x in like))
+    if type(like) is dict:
+        return ("dict", tuple((k if type(k) in (str, int) else ("object", id(k)), _like_signature(x))
+                              for k, x in like.items()))
+    return ("any",)
+
+
 def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], tuple] | None = None,
                        inline: bool = False) -> None:
     """In a trace: the function of the engine step that made ``value`` (an evaluation of ``obj``, such as a
@@ -1627,72 +1714,93 @@ def same_inline_function(value: Any, obj: Any, scene: Any, args: tuple, what: st
 
 
 def _same_call(t: "Trace", obj: Any, out: Any, args: list, what: str, key: Any = None) -> None:
-    """Hold a call of ``obj`` (its value ``out``, a graph of the nodes ``args``: the scene it is called on, then its
-    arguments; or ("number", q), a constant it returned) to one function.
-
-    Every call is compared with the first whose arguments are distinct nodes (the step's function, whose
-    parameters are); a call that passes one node as two arguments (Λ(g, g)) with that call's arguments merged
-    the same way (calls of one such pattern made before there is one are compared with it when it comes, and
-    with each other).  The scene: a call on the claim's own scene cannot tell a value the function keeps from
-    the claim's scene from one it reads from the scene it is given, so it is compared with a call on another
-    scene with the claim's scene standing for that one; calls on other scenes (a derivative's, a point's own)
-    are compared with each other as they are, where s.X kept from the claim's scene is a constant and t.X is
-    not (stop 79)."""
+    """Record a call of ``obj`` (its value ``out``, a graph of the nodes ``args``: the scene it is called on, then
+    its arguments; or ("number", q), a constant it returned), to be held to one function when the claim's trace
+    ends (:meth:`Trace.check_calls`, where the rule is).  Calls of an object that is another object by the end
+    (an id reused) start afresh."""
     g = t.g
     own = g.index.get(("scene", (0,)))
-    entries = [(a,) for a in args]
     # a parameter the step's function does not read is -1: a placeholder of its own, never one of another's
-    entries = [tuple(x if x >= 0 else -1 - 1000 * k for x in e) for k, e in enumerate(entries)]
-    labels = tuple(next(j for j in range(k + 1) if entries[j][0] == entries[k][0]) for k in range(len(entries)))
+    entries = [x if x >= 0 else -1 - 1000 * k for k, x in enumerate(args)]
+    labels = tuple(next(j for j in range(k + 1) if entries[j] == entries[k]) for k in range(len(entries)))
     on_own = own is not None and args[0] == own
-    calls = t._calls.setdefault(key if key is not None else id(obj),
-                                {"obj": obj, "ref": {}, "patterns": {}, "pending": []})
+    calls = t._calls.setdefault(key if key is not None else id(obj), {"obj": obj, "calls": [], "what": what})
     if calls["obj"] is not obj:
-        calls.update(obj=obj, ref={}, patterns={}, pending=[])
-    call = (out, entries, labels, on_own)
+        calls.update(obj=obj, calls=[], what=what)
+    calls["calls"].append((out, tuple(entries), labels, on_own))
 
-    def refuse() -> None:
-        t.refuse(f"{what} traces to another graph at one of its calls than at its first (a test of its "
-                 "arguments, or its state, changed it): a statement about one function")
 
-    def scene_entries(r_entries: list, r_own: bool, c_entries: list, c_own: bool) -> tuple[list, list]:
-        # the claim's scene stands for the other call's scene where exactly one of the two is on it
-        if r_own and not c_own:
-            c_entries = [c_entries[0] + (own,)] + c_entries[1:]
-        elif c_own and not r_own:
-            r_entries = [r_entries[0] + (own,)] + r_entries[1:]
-        return r_entries, c_entries
+def _holds(t: "Trace", ref: tuple, c: tuple, own: int | None) -> bool:
+    """Whether the call ``c`` is the function of the call ``ref`` (whose arguments are distinct nodes) at ``c``'s
+    scene and arguments: the same graph of them (``c``'s arguments merged as it passes them, Λ(g, g)), or the graph
+    ``ref``'s value becomes when ``c``'s scene and arguments are put in place of ``ref``'s (:func:`_substituted`)."""
+    r_out, r_entries, _r_labels, r_own = ref
+    c_out, c_entries, c_labels, c_own = c
+    if len(r_entries) != len(c_entries):
+        return False
+    if type(r_out) is tuple or type(c_out) is tuple:
+        return r_out == c_out
+    # the claim's scene stands for the other call's scene where exactly one of the two is on it
+    r_e = [(x,) for x in r_entries]
+    c_e = [(x,) for x in c_entries]
+    if r_own and not c_own:
+        c_e[0] = c_e[0] + (own,)
+    elif c_own and not r_own:
+        r_e[0] = r_e[0] + (own,)
+    classes = sorted(set(c_labels))
+    merged = [tuple(x for k, e in enumerate(r_e) if c_labels[k] == cl for x in e) for cl in classes]
+    if t.same_graph([r_out], merged, [c_out], [c_e[cl] for cl in classes]):
+        return True
+    if r_own and not c_own:
+        # ref's nodes of the claim's scene are values it keeps and values it reads alike: no substitution
+        return False
+    sigma: dict[int, int] = {}
+    for x, y in zip(r_entries, c_entries):
+        if x < 0 or y < 0:
+            continue            # a parameter one of the two does not read
+        if sigma.setdefault(x, y) != y:
+            return False
+    return _substituted(t.g, r_out, sigma) == c_out
 
-    def compare(ref: tuple, c: tuple) -> None:
-        r_out, r_entries, _r_labels, r_own = ref
-        c_out, c_entries, c_labels, c_own = c
-        if len(r_entries) != len(c_entries):
-            refuse()
-        r_entries, c_entries = scene_entries(list(r_entries), r_own, list(c_entries), c_own)
-        classes = sorted(set(c_labels))
-        merged = [tuple(x for k, e in enumerate(r_entries) if c_labels[k] == cl for x in e) for cl in classes]
-        if type(r_out) is tuple or type(c_out) is tuple:
-            if r_out != c_out:
-                refuse()
-        elif not t.same_graph([r_out], merged, [c_out], [c_entries[cl] for cl in classes]):
-            refuse()
 
-    refs = calls["ref"]
-    if labels == tuple(range(len(labels))):         # distinct arguments
-        for ref in refs.values():
-            compare(ref, call)
-        if on_own not in refs:
-            refs[on_own] = call
-            for c in calls["pending"]:
-                compare(call, c)
-        return
-    for ref in refs.values():
-        compare(ref, call)
-    calls["pending"].append(call)
-    first = calls["patterns"].setdefault((labels, on_own), call)
-    if first is not call and (first[0] != out if type(out) is tuple or type(first[0]) is tuple
-                              else not t.same_graph([first[0]], list(first[1]), [out], entries)):
-        refuse()
+def _substituted(g: Graph, out: int, sigma: dict[int, int]) -> int | None:
+    """The node the graph of ``out`` becomes when each node ``x`` of ``sigma`` is replaced by ``sigma[x]``, looked
+    up among the graph's nodes (hash-consed: a call that computed that graph made that node); None when a node of
+    it is not in the graph, or when ``out`` reads a function's parameter, scene or body other than through the
+    nodes of ``sigma`` (the value is then no function of the call's scene and arguments alone)."""
+    memo: dict[int, int] = dict(sigma)
+    index, ops, args = g.index, g.ops, g.args
+
+    def put(a: Any) -> Any:
+        if type(a) is Ref:
+            return _ref(memo[a.i])
+        if type(a) is tuple:
+            return tuple(put(b) for b in a)
+        return a
+
+    stack = [out]
+    while stack:
+        i = stack[-1]
+        if i in memo:
+            stack.pop()
+            continue
+        op, a = ops[i], args[i]
+        if op in ("param", "fn") or (op == "scene" and a[0] != 0):
+            return None
+        kids = g.refs(i)
+        todo = [j for j in kids if j not in memo]
+        if todo:
+            stack.extend(todo)
+            continue
+        stack.pop()
+        if all(memo[j] == j for j in kids):
+            memo[i] = i
+            continue
+        j = index.get((op, put(a)))
+        if j is None:
+            return None
+        memo[i] = j
+    return memo[out]
 
 
 def same_scene_function(f: Any, scene: Any, value: Any, what: str) -> Any:
@@ -1764,6 +1872,7 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
             t.refuse("check names are strings")
         if not all(one_line(k, 200) for k in out):
             t.refuse("a check name is 1 to 200 characters of one line (it heads a line of the reports)")
+        t.check_calls()
         statements = (Inverse, RightInverse)
         t.g.output = t.g.add("dict", (tuple(out), tuple(t.inverse(v) if type(v) in statements else t.structure(v)
                                                         for v in out.values())))
