@@ -118,6 +118,8 @@ def dirac_bracket_for(constraints: Callable[[Any], Sequence[Mat]], name: str = "
     def evaluate(s: Any, F: Function, G: Function) -> Scalar:
         Fs = _scalar_constraints(constraints, s, keys)
         m = len(Fs)
+        if m == 0:
+            return s.canonical_bracket(F, G)      # no constraint (an empty list, or 0×0 matrices): {,}_0 itself
         C0 = s.mat([[s.canonical_bracket(Fi, Fj) for Fj in Fs] for Fi in Fs], ("cond", "cond"))
         C = C0.inv()
         FiF = [s.canonical_bracket(Fi, F) for Fi in Fs]
