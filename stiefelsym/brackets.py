@@ -745,15 +745,18 @@ def checked_tensor(T: PoissonTensor) -> PoissonTensor:
 
 
 def poisson_checks(s: Any, T: PoissonTensor, prefix: str = "") -> dict[str, Scalar]:
-    """Antisymmetry, polynomial degree and the Jacobi identity of T at a generic point x with
-    generic covectors a, b, c and a direction e: fresh elements of the space (:meth:`Space.fresh`), new at
+    """Additivity in a covector, antisymmetry, polynomial degree and the Jacobi identity of T at a generic point x
+    with generic covectors a, b, c and a direction e: fresh elements of the space (:meth:`Space.fresh`), new at
     every call, which the claim can neither name nor keep from another call (the checks say "for every
-    x, a, b, c": a tensor built on the test point would be wrong only away from it)."""
+    x, a, b, c": a tensor built on the test point would be wrong only away from it).  The Jacobi identity of
+    linear functions is the Schouten bracket [Λ, Λ] of a bivector only: additive in a (hence linear, the form
+    being rational) and antisymmetric, the form is bilinear."""
     sp = T.space
     x, a, b, c, e = (sp.fresh(s) for _ in range(5))
     T = checked_tensor(T)
     p = f"{prefix}: " if prefix else ""
     return {
+        f"{p}Λ(a + c, b) − Λ(a, b) − Λ(c, b)": T(s, x, a + c, b) - T(s, x, a, b) - T(s, x, c, b),
         f"{p}Λ(a, b) + Λ(b, a)": antisymmetry(s, T, x, a, b),
         f"{p}degree in x <= {T.degree}": degree_residual(s, T, x, e, b, c),
         f"{p}Jacobi identity": jacobiator(s, T, x, a, b, c),
