@@ -244,14 +244,24 @@ class MatrixFunction:
     name: str = "h"
 
     def __call__(self, s: Any, x: Mat) -> Scalar:
-        return self.value(s, x)
+        v = self.value(s, x)
+        # the value the claim computes with is the one the gradient's check takes (a value that tests its point would
+        # have the check pass for another function)
+        same_inline_function(v, self.value, s, (x,), f"the value of {self.name}")
+        return v
 
     def grad(self, s: Any, x: Mat) -> Mat:
-        return self.gradient(s, x)
+        """∇h(x), checked: the step :func:`gradient_check` refuses a gradient that is not the value's (a function
+        built with a gradient of another, MatrixFunction(lambda s, x: 0, lambda s, x: s.A), had the brackets of a
+        function it is not).  The value is one function of the point wherever the claim evaluates it."""
+        G = self.gradient(s, x)
+        zero = gradient_check(s, self.value, x, G)
+        same_step_function(zero, self.value, f"the value of {self.name}", inline=True)
+        return G + zero
 
     def pullback(self, moment: Callable[[Any], Mat]) -> Function:
         """h∘moment, a function of the scene."""
-        return lambda t: self.value(t, moment(t))
+        return lambda t: self(t, moment(t))
 
     def __add__(self, o: "MatrixFunction") -> "MatrixFunction":
         return MatrixFunction(lambda s, x: self.value(s, x) + o.value(s, x),
@@ -315,6 +325,52 @@ def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat, valu
         raise ValueError(NOT_SYMMETRIC + " (and one function: its value at x differs between two evaluations)")
     _check_symmetric(s, op, x)
     return x - x
+
+
+def gradient_check(s: Any, value: Callable[[Any, Mat], Scalar], x: Mat, G: Mat) -> Mat:
+    """The zero matrix of x's shape, once ``G`` is the gradient at x of y ↦ value(s, y) for <,> (taken in the space of
+    all matrices of x's shape): one step of the IR (a constant step: its derivative along every flow is 0), so that
+    every method makes the check when it evaluates the graph.  A coordinate scene takes the value's gradient at x by
+    reverse mode (over a field without it, or for an operation it does not differentiate, by a basis:
+    :func:`polynomial_gradient`); the dimension-free scene by cyclic differentiation at a letter of the engine's
+    own, put x in its place (:meth:`~stiefelsym.free.FreeScene.declared_gradient_holds`)."""
+    if hasattr(type(s), "_engine_letters"):            # the dimension-free scene
+        if not s.declared_gradient_holds(value, x, G):
+            raise ValueError(NOT_GRADIENT)
+        return x - x
+    if not _field_in(s, _AFFINE_CHECKED):
+        return x - x
+    if not (_value_gradient(s, value, x) - G).is_zero():
+        raise ValueError(NOT_GRADIENT)
+    return x - x
+
+
+#: the refusal of a MatrixFunction whose gradient is not its value's
+NOT_GRADIENT = ("MatrixFunction: the gradient is not the gradient of the value (dh(δ) = <∇h, δ> for every δ): a "
+                "bracket or a flow of h would be taken with another function's gradient")
+
+
+def _value_gradient(s: Any, value: Callable[[Any, Mat], Scalar], x: Mat) -> Mat:
+    """The gradient at x of y ↦ value(s, y) for <,>, in the space of all matrices of x's shape."""
+    from stiefelsym.backends.reverse import Unsupported
+    from stiefelsym.scene import Scene
+    from stiefelsym.systems import _reverse_applies, _reverse_gradients
+    if type(s) is Scene and _field_in(s, _REVERSE_FIELDS) and _reverse_applies(s):
+        try:
+            g = _reverse_gradients(s, lambda t, z: value(t, z["y"]), {"y": x}, ["y"])
+        except Unsupported:
+            g = None
+        if g is not None and len(g) == 1:
+            D = g[0]["y"]
+            if D is None:
+                return x * 0
+            # dh = Σ ∂h/∂y_ij δ_ij = tr(Dᵀδ) = <−2Dᵀ, δ>
+            return D._retyped(s.field, x.tags, s.tracker).T * (-2)
+    m, k = x.tags
+    if m != k or m not in ("n", "r"):
+        raise ValueError("MatrixFunction: the gradient of a function of a matrix that is not square, where the "
+                         "scene takes no reverse gradient")
+    return _polynomial_gradient(s, value, x, "gl", m)
 
 
 def _vanishes(s: Any, M: Mat) -> bool:
@@ -565,6 +621,7 @@ def _engine_element(s: Any, space: Space, tag: str) -> Mat:
 _affine_form_gradient = form_gradient
 form_gradient = primitive(form_gradient, like={"form": "point"}, returns=("like", "point"))
 symmetric_operator_check = primitive(symmetric_operator_check, like={"op": "x"}, returns=("like", "x"), zero=True)
+gradient_check = primitive(gradient_check, like={"value": "x"}, returns=("like", "x"), zero=True)
 
 
 #: the fields whose test of zero decides the degree in x that :func:`polynomial_gradient` derives (exact); on
@@ -635,6 +692,7 @@ def _form_degree(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, point
                      f"the point of {space.name} (refused: its gradient is not an interpolation)")
 
 
+_polynomial_gradient = polynomial_gradient
 polynomial_gradient = primitive(polynomial_gradient, like={"form": "point"}, returns=("like", "point"))
 
 

@@ -24,7 +24,7 @@ import symengine as se
 from stiefelsym.backends.fields import Dual, DualField, Field
 from stiefelsym.backends.matrix import CoordinateTracker, Mat, definite
 from stiefelsym.scene import (ENGINE_CHECK_DEPTH, FRESH, check_generic_kind, user_name, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
-                              map_entries)
+                              engine_check, map_entries)
 from stiefelsym.free.algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
                       letter_pair, mark_moving, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from stiefelsym.free.mat import FreeBackend, FreeDualBackend, entry_of, one_block
@@ -1298,6 +1298,39 @@ class FreeScene(PaperObjects):
         if _holds_letter(g, C):
             raise refuse("the gradient of a form that is not affine in its argument", self.tracker)
         return self._const_mat(self.field.normalize(g.star() * se.Integer(-2)))
+
+    def declared_gradient_holds(self, value: Callable[[Any, Mat], Any], x: Mat, G: Mat) -> bool:
+        """Whether ``G`` is the gradient at x, for ⟨a, b⟩ = −½ tr(ab), of y ↦ ``value(self, y)`` (y in x's space: one
+        block of n×n, n×r, r×n or r×r matrices): the value's gradient by cyclic differentiation at a letter C of the
+        engine's own (:meth:`_engine_letters`), x put in C's place, less G has normal form zero (on a tangent
+        scene, at the point: the check is an identity in the letters, which holds along every flow).  A value that
+        is not a trace form (it reads entries or blocks) needs coordinates."""
+        y, _ = self._engine_letters("gradient", x)
+
+        def point(M: Mat) -> Any:
+            e = entry_of(M)
+            while type(e) is Dual:
+                e = e.a
+            return e
+        e = point(x)
+        depth = ENGINE_CHECK_DEPTH[0]
+        C = self._named[f"eng:gradient:y[{e.row}x{e.col}]" + (f"@{depth}" if depth else "")]
+        with engine_check():
+            v = _raw(value(self, y))
+        if isinstance(v, Mat):
+            if v._shape() != (1, 1):
+                raise refuse("the value of a MatrixFunction that is not a number", self.tracker)
+            v = point(v)
+        if not isinstance(v, NCPoly):
+            c = as_coef(v)
+            if c is None:
+                raise refuse(f"the gradient of a function whose value is not a trace form ({type(v).__name__})",
+                             self.tracker)
+            v = NCPoly.scalar(c)
+        if not v.is_scalar:
+            raise refuse("the value of a MatrixFunction that is not a number", self.tracker)
+        at_x = substitute(self.field.normalize(gradient(v, C).star() * se.Integer(-2)), {C: e})
+        return bool((self._const_mat(self.field.normalize(at_x)) - self._const_mat(point(_raw(G)))).is_zero())
 
     def _holds_flow(self, H: Function) -> bool:
         """Whether H, as evaluated for its gradient, solved a flow's multipliers modulo the constraints (which

@@ -77,6 +77,9 @@ _STATE: dict[str, Any] = {"modules": None, "print": None, "objects": None, "subm
 
 
 def sealed() -> bool:
+    if not isinstance(_STATE, dict) or "modules" not in _STATE:
+        raise EngineChanged("the engine was changed by claim code: the seal's own record of the engine is gone; no "
+                            "verdict is given")
     return _STATE["modules"] is not None
 
 

@@ -1017,9 +1017,8 @@ class Trace:
         #: id(object) -> the calls of each object whose calls, inline or as an engine step's function, must be
         #: one function (see :func:`same_inline_function`, :func:`_same_call`)
         self._calls: dict[int, dict] = {}
-        #: (id(function), the shape of its argument) -> (function, body) at its first use by a step that shapes
-        #: its parameter like one of its arguments (see :meth:`function`)
-        self._like_functions: dict[tuple, tuple[Any, Any]] = {}
+        #: id(function) -> (function, body) at its first trace (see :meth:`function`)
+        self._first_bodies: dict[int, tuple[Any, Any]] = {}
         self._elements = False     # the generic elements of an Inverse statement are being made
         self._fresh = 0            # the fresh elements made so far (s.fresh)
         self._open = [0]           # the functions being traced (0: the claim), innermost last
@@ -1187,18 +1186,17 @@ class Trace:
         finally:
             self._open.pop()
         ref = self.g.add("fn", (k, arity, body))
-        if like is not None:
-            # traced afresh at each use, its parameter shaped like the step's argument: at a use with an argument
-            # of the same shape as at its first, it must be the same graph (up to the numbering of functions); a
-            # function whose state changed between two steps (a kinetic energy c·T with c flipped between two
-            # euler_lagrange calls) would have each step see another function (stop 79's review, W3b)
-            sig = _like_signature(like)
-            first = self._like_functions.setdefault((id(f), sig), (f, body))
-            if first[0] is not f:
-                self._like_functions[(id(f), sig)] = (f, body)
-            elif first[1] is not body and not self._same_body(first[1], body):
-                return self.refuse("a function that traces to another graph when it is used again (its state "
-                                   "changed between two uses)")
+        # a function traced afresh at a use (a step that shapes its parameter like its argument traces it at each use)
+        # must be the same graph as at its first (up to the numbering of functions and its parameter's shape): a
+        # function whose state changed between two steps (a kinetic energy c·T with c flipped between two
+        # euler_lagrange calls, its point's keys in another order at the second) would have each step see another
+        # function (stop 79's second review, W3b; stop 80's review, W2)
+        first = self._first_bodies.setdefault(id(f), (f, body))
+        if first[0] is not f:
+            self._first_bodies[id(f)] = (f, body)
+        elif first[1] is not body and not self._same_body(first[1], body):
+            return self.refuse("a function that traces to another graph when it is used again (its state "
+                               "changed between two uses)")
         self._functions[id(f)] = (f, ref, out, like)
         return ref, out
 
@@ -1221,43 +1219,51 @@ class Trace:
     def check_calls(self) -> None:
         """Hold every object the engine calls at several places (:func:`same_inline_function`,
         :func:`same_step_function` with ``inline``, :func:`same_scene_function`) to one function, once the
-        claim's calls are all made: refuse the claim when they are not.
+        claim's calls are all made (its Inverse statements' included): refuse the claim when they are not.
+
+        A reference is a call with the most distinct arguments (at distinct arguments where there is one); every
+        call must pass its arguments as the reference's pattern does or merge more of them (Λ(g, g) after
+        Λ(a, b), or Λ(g; g, g) after Λ(x; g, g)), and be the reference's function at its own scene and arguments
+        (:func:`_holds`: by shape, the reference's arguments merged as the call passes them, or by substitution
+        into the reference, which serves where a call's argument is also a node the function computes, such as
+        Λ(a·b; a, b) of the Lie–Poisson form, stop 80).
 
         The calls of an object fall in two kinds: those on the claim's own scene, and those on another scene
         (an engine step's function at its parameters, a derivative's scene, a point's own).  A call on the
         claim's scene cannot tell a value the function keeps from the claim's scene from one it reads from the
-        scene it is given, so it stands for the other scene when one of two compared calls is on it; calls on
-        other scenes are compared as they are, where s.X kept from the claim's scene is a constant and t.X is
-        not (stop 79).  One call at distinct arguments is the reference, on another scene when the object is
-        called on one (the first that serves of the first few): every call of the object is the reference's
-        function at its scene and arguments (:func:`_holds`).  A call that passes one node as two arguments,
-        Λ(g, g), is compared with the reference's arguments merged the same way; a call whose argument is also a
-        node the function computes (Λ(a·b; a, b), whose form makes a·b) by substitution into the reference
-        (stop 80: compared by shape, it was refused).  Calls with one node as two arguments are also held to the
-        first call of their pattern, which is all there is to hold them to when no call has distinct ones."""
+        scene it is given, so the claim's scene stands for the other scene when one of two compared calls is on
+        it; calls on other scenes are compared as they are, where s.X kept from the claim's scene is a constant
+        and t.X is not (stop 79).  So the calls on other scenes have a reference among them as well, and every
+        one of them is held to it as it is.  Candidates are tried in turn (the calls at arguments the function
+        does not compute first, a few dozen at most), the first that serves is the reference."""
         own = self.g.index.get(("scene", (0,)))
+        simple = ("param", "item", "call", "attr", "scene", "fresh", "generic")
         for calls in self._calls.values():
             cs, what = calls["calls"], calls["what"]
-            ok = True
-            for on_own in (False, True):
-                # a reference on another scene when there is one (a call on the claim's scene is the reference's
-                # function at it exactly, the claim's scene standing for the reference's: nothing is merged
-                # there); the first few candidates (a claim whose calls are one function has its first serve,
-                # unless that call's argument is a node the function computes)
-                refs = [c for c in cs if c[3] == on_own and c[2] == tuple(range(len(c[2])))][:8]
-                if refs:
-                    ok = any(all(_holds(self, ref, c, own) for c in cs) for ref in refs)
-                    break
-            if ok:
-                first: dict[tuple, tuple] = {}
-                for c in cs:
-                    if c[2] == tuple(range(len(c[2]))):
-                        continue
-                    f = first.setdefault((c[2], c[3]), c)
-                    if f is not c and not _holds(self, f, c, own):
-                        ok = False
-                        break
-            if not ok:
+            memo: dict[tuple[int, int], bool] = {}
+
+            def holds(r: int, c: int) -> bool:
+                key = (r, c)
+                if key not in memo:
+                    a, b = cs[r], cs[c]
+                    memo[key] = (len(a[2]) == len(b[2]) and all(b[2][i] == b[2][a[2][i]] for i in range(len(a[2])))
+                                 and _holds(self, a, b, own))
+                return memo[key]
+
+            def serves(group: list[int]) -> bool:
+                if len(group) < 2:
+                    return True
+                most = max(len(set(cs[i][2])) for i in group)
+                cands = [i for i in group if len(set(cs[i][2])) == most]
+                g_ops = self.g.ops
+                cands.sort(key=lambda i: not all(x < 0 or g_ops[x] in simple for x in cs[i][1][1:]))
+                return any(all(holds(r, c) for c in group) for r in cands[:32])
+
+            everyone = list(range(len(cs)))
+            others = [i for i in everyone if not cs[i][3]]
+            # (a reference on another scene first: calls on the claim's scene hold to it exactly)
+            everyone.sort(key=lambda i: cs[i][3])
+            if not (serves(others) and serves(everyone)):
                 self.refuse(f"{what} traces to another graph at one of its calls than at its first (a test of "
                             "its arguments, or its state, changed it): a statement about one function")
 
@@ -1488,13 +1494,15 @@ class Trace:
                 if i in memo:
                     stack.pop()
                     continue
-                todo = [j for j in g.refs(i) if j not in memo]
+                op, a = g.ops[i], g.args[i]
+                # (a parameter's shape-giving argument is left out: not read, its functions not numbered)
+                kids = () if op == "param" else g.refs(i)
+                todo = [j for j in kids if j not in memo]
                 if todo:
                     stack.extend(todo)
                     continue
                 stack.pop()
-                below = {j: memo[j] for j in g.refs(i)}
-                op, a = g.ops[i], g.args[i]
+                below = {j: memo[j] for j in kids}
                 if op in ("fn", "param") or (op == "scene" and a[0] != 0):
                     # a function traced in the call: numbered by the trace, so by order of appearance here
                     rest = a[1:2] if op == "param" else a[1:]
@@ -1617,19 +1625,6 @@ class Trace:
         return Tracer(self, ref, ANY)
 
 
-def _like_signature(like: Any) -> Any:
-    """The shape of a step's argument a function's parameter is made like (:meth:`Trace.mirror`): its kinds and
-    shapes, the keys of its dicts."""
-    if isinstance(like, Tracer):
-        return ("value", like._kind, like._shape)
-    if type(like) in (list, tuple, Gradient):
-        return (type(like).__name__, tuple(_like_signature(x) for x in like))
-    if type(like) is dict:
-        return ("dict", tuple((k if type(k) in (str, int) else ("object", id(k)), _like_signature(x))
-                              for k, x in like.items()))
-    return ("any",)
-
-
 def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], tuple] | None = None,
                        inline: bool = False) -> None:
     """In a trace: the function of the engine step that made ``value`` (an evaluation of ``obj``, such as a
@@ -1644,6 +1639,9 @@ def same_step_function(value: Any, obj: Any, what: str, parts: Callable[[Any], t
         return
     t = _ACTIVE[-1]
     k = t.step_function(value)
+    hit = t._functions.get(id(obj))
+    if k is not None and hit is not None and hit[0] is obj and hit[1].i in t.g.refs(value._r.i):
+        k = hit[1].i                    # a step of several functions: the one the object was traced as
     if k is None:
         return
     body = t.g.args[k][2]
@@ -1756,8 +1754,10 @@ def _holds(t: "Trace", ref: tuple, c: tuple, own: int | None) -> bool:
         return False
     sigma: dict[int, int] = {}
     for x, y in zip(r_entries, c_entries):
-        if x < 0 or y < 0:
-            continue            # a parameter one of the two does not read
+        if x < 0:
+            continue            # a parameter the reference does not read
+        if y < 0:
+            y = -1              # one the call does not read: the reference's value must not depend on it
         if sigma.setdefault(x, y) != y:
             return False
     return _substituted(t.g, r_out, sigma) == c_out
@@ -1767,7 +1767,8 @@ def _substituted(g: Graph, out: int, sigma: dict[int, int]) -> int | None:
     """The node the graph of ``out`` becomes when each node ``x`` of ``sigma`` is replaced by ``sigma[x]``, looked
     up among the graph's nodes (hash-consed: a call that computed that graph made that node); None when a node of
     it is not in the graph, or when ``out`` reads a function's parameter, scene or body other than through the
-    nodes of ``sigma`` (the value is then no function of the call's scene and arguments alone)."""
+    nodes of ``sigma`` (the value is then no function of the call's scene and arguments alone), or when it reads a
+    node that ``sigma`` maps to −1 (an argument the other call does not read)."""
     memo: dict[int, int] = dict(sigma)
     index, ops, args = g.index, g.ops, g.args
 
@@ -1793,6 +1794,8 @@ def _substituted(g: Graph, out: int, sigma: dict[int, int]) -> int | None:
             stack.extend(todo)
             continue
         stack.pop()
+        if any(memo[j] < 0 for j in kids):
+            return None
         if all(memo[j] == j for j in kids):
             memo[i] = i
             continue
@@ -1800,7 +1803,7 @@ def _substituted(g: Graph, out: int, sigma: dict[int, int]) -> int | None:
         if j is None:
             return None
         memo[i] = j
-    return memo[out]
+    return memo[out] if memo[out] >= 0 else None
 
 
 def same_scene_function(f: Any, scene: Any, value: Any, what: str) -> Any:
@@ -1872,10 +1875,10 @@ def trace(func: Callable, n: int | None, r: int | None, constraints: tuple[str, 
             t.refuse("check names are strings")
         if not all(one_line(k, 200) for k in out):
             t.refuse("a check name is 1 to 200 characters of one line (it heads a line of the reports)")
-        t.check_calls()
         statements = (Inverse, RightInverse)
         t.g.output = t.g.add("dict", (tuple(out), tuple(t.inverse(v) if type(v) in statements else t.structure(v)
                                                         for v in out.values())))
+        t.check_calls()           # (the calls an Inverse statement's op makes included)
         t.check_parameters()
     finally:
         _ACTIVE.pop()
