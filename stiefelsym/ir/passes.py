@@ -571,7 +571,8 @@ R_FREE_CALLS = frozenset({"generic", "fresh", "zeros", "identity", "scalar_matri
 #: the engine steps that evaluate a function of the claim on a space of the claim's choice (gl(n), so(n):
 #: the index space is an argument, which the pass checks) and read nothing else of the scene
 R_FREE_STEPS = frozenset({"stiefelsym.brackets.form_gradient", "stiefelsym.brackets.polynomial_gradient",
-                          "stiefelsym.brackets.tensor_value", "stiefelsym.brackets.symmetric_operator_check"})
+                          "stiefelsym.brackets.tensor_value", "stiefelsym.brackets.symmetric_operator_check",
+                          "stiefelsym.brackets.gradient_check"})
 #: the operations that compute from their arguments alone
 _R_FREE_OPS = frozenset({"scene", "param", "fn", "apply", "add", "sub", "neg", "mul", "rmul", "div", "rdiv",
                          "pow", "matmul", "T", "inv", "trace", "entry", "item", "block", "list", "tuple", "dict",

@@ -164,3 +164,22 @@ def test_a_declared_gradient_is_checked_against_its_value(method):
             assert "not the gradient of the value" in rec.get("message", ""), rec.get("message", "")[:300]
         else:
             _decided(rec, True, method)
+
+
+REVIEW2_80 = ADVERSARY / "s80" / "review2"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_the_second_reviews_routes_around_the_gradient_check(method):
+    """The second review of the stop's changes (s80/review2): a sum or a multiple of functions read its parts'
+    values through their raw fields, apart from the claim's calls (W2: a part whose value tests its point had its
+    gradient checked against another value); a subclass overriding grad handed the engine an unchecked gradient
+    (W3).  The parts' values are their held calls, and the engine takes every gradient through MatrixFunction.grad."""
+    for (cid, _n, _r), rec in _records(REVIEW2_80 / "combined.py", "--method", method).items():
+        if cid.endswith("-contradiction"):
+            _refused(rec, method)
+        elif cid == "h4-comb-add-control-true":
+            _decided(rec, True, method)
+    for (cid, _n, _r), rec in _records(REVIEW2_80 / "overrides.py", "--method", method).items():
+        if cid in ("h4-ov-grad-false", "h4-ov-dataclass-false"):
+            assert rec["verdict"] in ("error", "undecided", "fails"), (cid, method, rec["verdict"])
