@@ -1281,23 +1281,28 @@ class FreeScene(PaperObjects):
         global _FORM_LETTERS
         _FORM_LETTERS += 1
         C, _ = letter_pair(f"form:{_FORM_LETTERS}", f"form:{_FORM_LETTERS}^T", index, index, "C", "C^{T}")
-        value = _raw(form(self, self._prim(str(C), _w(C))))
-        if isinstance(value, Mat):
-            if value._shape() != (1, 1):
-                raise refuse("the gradient of a form whose value is not a number", self.tracker)
-            value = entry_of(value)
-        if not isinstance(value, NCPoly):
-            c = as_coef(value)
-            if c is None:
-                raise refuse(f"the gradient of a form whose value is not a trace form ({type(value).__name__})",
-                             self.tracker)
-            value = NCPoly.scalar(c)
-        if not value.is_scalar:
-            raise refuse("the gradient of a form whose value is not a number", self.tracker)
+        value = self._scalar_trace_form(_raw(form(self, self._prim(str(C), _w(C)))), "a form", entry_of)
         g = gradient(value, C)
         if _holds_letter(g, C):
             raise refuse("the gradient of a form that is not affine in its argument", self.tracker)
         return self._const_mat(self.field.normalize(g.star() * se.Integer(-2)))
+
+    def _scalar_trace_form(self, value: Any, what: str, entry: Callable[[Mat], Any]) -> NCPoly:
+        """A form's value at a letter as a scalar trace form (a 1×1 matrix's ``entry``, or a number), or refused: the
+        gradient of ``what`` whose value is not a number, or not a trace form."""
+        if isinstance(value, Mat):
+            if value._shape() != (1, 1):
+                raise refuse(f"the gradient of {what} whose value is not a number", self.tracker)
+            value = entry(value)
+        if not isinstance(value, NCPoly):
+            c = as_coef(value)
+            if c is None:
+                raise refuse(f"the gradient of {what} whose value is not a trace form ({type(value).__name__})",
+                             self.tracker)
+            value = NCPoly.scalar(c)
+        if not value.is_scalar:
+            raise refuse(f"the gradient of {what} whose value is not a number", self.tracker)
+        return value
 
     def declared_gradient_holds(self, value: Callable[[Any, Mat], Any], x: Mat, G: Mat) -> bool:
         """Whether ``G`` is the gradient at x, for ⟨a, b⟩ = −½ tr(ab), of y ↦ ``value(self, y)`` (y in x's space: one
@@ -1316,19 +1321,7 @@ class FreeScene(PaperObjects):
         depth = ENGINE_CHECK_DEPTH[0]
         C = self._named[f"eng:gradient:y[{e.row}x{e.col}]" + (f"@{depth}" if depth else "")]
         with engine_check():
-            v = _raw(value(self, y))
-        if isinstance(v, Mat):
-            if v._shape() != (1, 1):
-                raise refuse("the value of a MatrixFunction that is not a number", self.tracker)
-            v = point(v)
-        if not isinstance(v, NCPoly):
-            c = as_coef(v)
-            if c is None:
-                raise refuse(f"the gradient of a function whose value is not a trace form ({type(v).__name__})",
-                             self.tracker)
-            v = NCPoly.scalar(c)
-        if not v.is_scalar:
-            raise refuse("the value of a MatrixFunction that is not a number", self.tracker)
+            v = self._scalar_trace_form(_raw(value(self, y)), "a function", point)
         at_x = substitute(self.field.normalize(gradient(v, C).star() * se.Integer(-2)), {C: e})
         return bool((self._const_mat(self.field.normalize(at_x)) - self._const_mat(point(_raw(G)))).is_zero())
 
