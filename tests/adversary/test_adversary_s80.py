@@ -159,9 +159,10 @@ def test_a_declared_gradient_is_checked_against_its_value(method):
     where it is taken (brackets.gradient_check): by reverse mode at the point on a coordinate scene, by cyclic
     differentiation on the dimension-free one.  Declared gradients that are right stay decided."""
     for (cid, _n, _r), rec in _records(OWN / "declared_gradient.py", "--method", method).items():
-        if cid in ("mf-zero-with-gradient", "mf-cubic-declared-false"):
+        if cid in ("mf-zero-with-gradient", "mf-cubic-declared-false", "mf-entry-zero-gradient"):
             assert rec["verdict"] in ("error", "undecided"), (cid, method, rec["verdict"])
-            assert "not the gradient of the value" in rec.get("message", ""), rec.get("message", "")[:300]
+            if not (cid == "mf-entry-zero-gradient" and method == "free"):     # free: needs coordinates
+                assert "not the gradient of the value" in rec.get("message", ""), rec.get("message", "")[:300]
         else:
             _decided(rec, True, method)
 

@@ -55,3 +55,12 @@ def cubic_false(s):
     f = _cubic(True)
     x = GL_N.generic(s, "x")
     return {"∇f(x) = −6(x²)ᵀ": f.grad(s, x) + (x @ x).T * 6}
+
+
+@claim("mf-entry-zero-gradient", kind="pb", sizes=SZ)
+def entry_zero(s):
+    """f(y) = y₁₁ (an entry: the free scene needs coordinates) declared with gradient 0: {f, <·, b>} = 0 is FALSE
+    (its gradient is −2E₁₁, and <x, [E₁₁, b]> ≠ 0): refused."""
+    f = MatrixFunction(lambda t, y: y[0, 0], lambda t, y: y * 0, "y11")
+    x, b, br = _bracket(s, f)
+    return {"{f, <.,b>} = 0": br}
