@@ -333,8 +333,10 @@ def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat, valu
     and its value at x is the claim's ``value`` (the same function where the claim evaluates it): one step of
     the IR, so that every method makes the check when it evaluates the graph (a constant step: its derivative
     along every flow is 0)."""
+    _refuse_on_tape(s, "quadratic's operator")
     if not _vanishes(s, op(s, x) - value):
-        raise ValueError(NOT_SYMMETRIC + " (and one function: its value at x differs between two evaluations)")
+        raise ValueError(NOT_SYMMETRIC + " (and one function: its value at x differs between two evaluations)"
+                         + _along_flow(s))
     _check_symmetric(s, op, x)
     return x - x
 
@@ -350,11 +352,30 @@ def gradient_check(s: Any, value: Callable[[Any, Mat], Scalar], x: Mat, G: Mat) 
         if not s.declared_gradient_holds(value, x, G):
             raise ValueError(NOT_GRADIENT)
         return x - x
+    _refuse_on_tape(s, "MatrixFunction.grad")
     if not _field_in(s, _AFFINE_CHECKED):
         return x - x
     if not (_value_gradient(s, value, x) - G).is_zero():
-        raise ValueError(NOT_GRADIENT)
+        raise ValueError(NOT_GRADIENT + _along_flow(s))
     return x - x
+
+
+def _along_flow(s: Any) -> str:
+    """What a check's refusal adds on the dual numbers of a derivative along a flow (the check compares both parts:
+    what holds at the point must hold to first order along the flow)."""
+    if "dual(" in getattr(getattr(s, "_field", None), "name", ""):
+        return " (inside a derivative along a flow: it holds at the point, not to first order along the flow)"
+    return ""
+
+
+def _refuse_on_tape(s: Any, what: str) -> None:
+    """Refuse a check step evaluated on a reverse tape (inside the function of s.gradient, at arguments that move
+    with the gradient's variables): the check holds at the point, which says nothing of the adjoints handed
+    through it (a gradient right on V(n, r) and not off it would have its wrong derivative taken)."""
+    if "reverse(" in getattr(getattr(s, "_field", None), "name", ""):
+        raise ValueError(f"{what}: the gradient (s.gradient) of a function that takes it at a point moving with the "
+                         "gradient's variables: its check holds at the point only, not for the derivative taken "
+                         "through it")
 
 
 #: the refusal of a MatrixFunction whose gradient is not its value's
@@ -419,7 +440,7 @@ def _check_symmetric(s: Any, op: Callable[[Any, Mat], Mat], x: Mat) -> None:
         sym = s.killing(y, op(s, z)) - s.killing(z, op(s, y))
         add = op(s, y + z) - op(s, y) - op(s, z)
     if not field.is_zero(sym) or not add.is_zero():
-        raise ValueError(NOT_SYMMETRIC)
+        raise ValueError(NOT_SYMMETRIC + _along_flow(s))
 
 
 def _power(M: Mat, k: int, one: Mat) -> Mat:

@@ -544,6 +544,11 @@ class _Derivative:
             raise Unsupported("a function of the scene defined inside the function (a nested derivative, "
                               "gradient, flow or bracket)")
         if op == "prim" and type(a[0]) is Named and a[0].qualname in ZERO_PRIMITIVES:
+            if any(type(x) is Ref and self.k in self.deps[x.i] for x in a[1:]):
+                # a check made at the point: along a flow it must hold to first order as well (a gradient right
+                # at the point and not along the flow would pass with derivative 0), which the scene's dual
+                # numbers check (both parts)
+                raise Unsupported(f"an engine check ({a[0].qualname.rsplit('.', 1)[-1]}) at a moving argument")
             return None                     # zero wherever it is defined: constant along every flow
         if op == "prim" and type(a[0]) is Named and a[0].qualname in CONSTANT_PRIMITIVES:
             if any(self.moves(x) for x in a[1:]):
@@ -1071,6 +1076,11 @@ class _Gradient(_Derivative):
         elif op == "list":
             return                          # the rows of a matrix of given entries (s.mat sends to its cells)
         elif op == "prim" and type(a[0]) is Named and a[0].qualname in ZERO_PRIMITIVES:
+            if any(type(x) is Ref and self.k in self.deps[x.i] for x in a[1:]):
+                # a check made at the point of the gradient's variables: the adjoint of its arguments is the
+                # scene's business (a gradient right at the point is no check of its derivative)
+                raise Unsupported(f"an engine check ({a[0].qualname.rsplit('.', 1)[-1]}) at a moving argument "
+                                  "inside the function of a gradient")
             return                          # zero wherever defined: no adjoint reaches its arguments
         elif op == "prim" and _constant_vector(a[0]):
             if any(self.moving(x) for x in a[1:]):
