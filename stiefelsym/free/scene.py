@@ -70,6 +70,11 @@ COND_XP = "X^T P + P^T X = 0 (cond_XP)"
 MOVABLE = ("X", "P", "Y", "Q")
 
 
+def _vanishes_part(p: Any) -> bool:
+    """Whether a part of a dual number is 0 (an exact zero or the zero polynomial)."""
+    return p.is_zero_raw() if isinstance(p, NCPoly) else p == 0
+
+
 def _check_movable(key: Any, tracker: Any) -> None:
     """A key of a tangent vector: one of the letters the algebra moves; the complex point (Zc, Zc_dot),
     which the coordinate scenes move, is left to them (a refusal: undecided); any other key is refused
@@ -1307,23 +1312,38 @@ class FreeScene(PaperObjects):
     def declared_gradient_holds(self, value: Callable[[Any, Mat], Any], x: Mat, G: Mat) -> bool:
         """Whether ``G`` is the gradient at x, for ⟨a, b⟩ = −½ tr(ab), of y ↦ ``value(self, y)`` (y in x's space: one
         block of n×n, n×r, r×n or r×r matrices): the value's gradient by cyclic differentiation at a letter C of the
-        engine's own (:meth:`_engine_letters`), x put in C's place, less G has normal form zero (on a tangent
-        scene, at the point: the check is an identity in the letters, which holds along every flow).  A value that
-        is not a trace form (it reads entries or blocks) needs coordinates."""
+        engine's own (:meth:`_engine_letters`), x put in C's place, less G has normal form zero.  On a tangent scene
+        (inside a derivative along a flow) both parts are compared: the gradient of the value's tangent part is the
+        tangent part of G (d/dt ∇h(t, x) = ∇(dh/dt)(t, x) for a point x that does not move; a moving point needs
+        the Hessian, refused).  A value that is not a trace form (it reads entries or blocks) needs coordinates."""
         y, _ = self._engine_letters("gradient", x)
-
-        def point(M: Mat) -> Any:
-            e = entry_of(M)
-            while type(e) is Dual:
-                e = e.a
-            return e
-        e = point(x)
+        ex = entry_of(x)
+        if type(ex) is Dual:
+            if not _vanishes_part(ex.b):
+                raise refuse("a declared gradient at a point that moves along the flow (its derivative needs the "
+                             "Hessian of the value)", self.tracker)
+            ex = ex.a
+        if type(ex) is Dual:
+            raise refuse("a declared gradient inside nested dual numbers", self.tracker)
         depth = ENGINE_CHECK_DEPTH[0]
-        C = self._named[f"eng:gradient:y[{e.row}x{e.col}]" + (f"@{depth}" if depth else "")]
+        C = self._named[f"eng:gradient:y[{ex.row}x{ex.col}]" + (f"@{depth}" if depth else "")]
         with engine_check():
-            v = self._scalar_trace_form(_raw(value(self, y)), "a function", point)
-        at_x = substitute(self.field.normalize(gradient(v, C).star() * se.Integer(-2)), {C: e})
-        return bool((self._const_mat(self.field.normalize(at_x)) - self._const_mat(point(_raw(G)))).is_zero())
+            v = _raw(value(self, y))
+        v = entry_of(v) if isinstance(v, Mat) and v._shape() == (1, 1) else v
+        g = entry_of(_raw(G))
+        nf = (self.field.base if isinstance(self.field, DualField) else self.field).normalize
+        vs, gs = ((v.a, v.b) if type(v) is Dual else (v, None)), ((g.a, g.b) if type(g) is Dual else (g, None))
+        for vp, gp in zip(vs, gs):
+            if vp is None and gp is None:
+                continue
+            if type(vp) is Dual or type(gp) is Dual:
+                raise refuse("a declared gradient inside nested dual numbers", self.tracker)
+            vp = self._scalar_trace_form(se.Integer(0) if vp is None else vp, "a function", entry_of)
+            at_x = substitute(nf(gradient(vp, C).star() * se.Integer(-2)), {C: ex})
+            target = self._const_mat(NCPoly.zero(ex.row, ex.col) if gp is None else gp)
+            if not bool((self._const_mat(nf(at_x)) - target).is_zero()):
+                return False
+        return True
 
     def _holds_flow(self, H: Function) -> bool:
         """Whether H, as evaluated for its gradient, solved a flow's multipliers modulo the constraints (which

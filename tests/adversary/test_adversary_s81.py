@@ -57,3 +57,36 @@ def test_a_check_at_the_point_is_no_check_of_its_derivative(name, method):
             assert v in HONEST and ("not to first order along the flow" in rec.get("message", "")
                                     or "its check holds at the point only" in rec.get("message", "")), (
                 cid, method, v, rec.get("message", "")[:300])
+
+
+def test_the_free_method_checks_both_parts_of_a_declared_gradient_along_a_flow():
+    """On the dimension-free scene's tangent scene the declared gradient is compared with the value's in both parts
+    (the gradient of the value's tangent part is G's tangent part): the honest claim is proved for all n, r, the
+    gradients right at the point only are refused."""
+    recs = _records(REVIEW2_80 / "tan_grad.py", "--method", "free")
+    assert recs[("h4-tan-honest-true", None, None)]["verdict"] == "proved"
+    for cid in ("h4-tan-capture-false", "h4-tan-capture-truetwin", "h4-tan-bracket-false"):
+        rec = recs[(cid, None, None)]
+        assert rec["verdict"] == "undecided" and "not the gradient of the value" in rec.get("message", ""), (
+            cid, rec["verdict"], rec.get("message", "")[:300])
+
+
+OWN = ADVERSARY / "s81" / "own"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
+def test_a_declared_gradient_at_a_point_that_moves_along_the_flow(method):
+    """The stop's own attempt (s81/own/moving_point.py): the gradient at x = XXᵀ, which moves along the flow.  The
+    fixed-size methods check the declared gradient in dual numbers at the moving point (the Hessian's term is in
+    the value's gradient there) and decide the honest claim; a gradient right at the point only (it keeps the
+    claim's x) is refused; the dimension-free method refuses a moving point (it would need the Hessian)."""
+    size = [] if method == "free" else ["--size", "3,2"]
+    recs = {cid: rec for (cid, _n, _r), rec in _records(OWN / "moving_point.py", "--method", method, *size).items()}
+    if method == "free":
+        assert all(r["verdict"] == "undecided" and "moves along the flow" in r.get("message", "")
+                   for r in recs.values()), [(c, r["verdict"]) for c, r in recs.items()]
+        return
+    assert recs["s81-mp-true"]["verdict"] in TRUE and recs["s81-mp-false"]["verdict"] == "fails"
+    for cid in ("s81-mp-capture", "s81-mp-capture-false"):
+        assert recs[cid]["verdict"] == "error" and "not to first order" in recs[cid].get("message", ""), (
+            cid, recs[cid]["verdict"])
