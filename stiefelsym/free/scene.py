@@ -292,7 +292,12 @@ class FreeField(Field):
     def is_zero(self, x: Any) -> bool:
         if isinstance(x, NCPoly):
             return self.system.is_zero(x)
-        return simplify_coef(as_coef(x)) == 0
+        if type(x) is Dual:             # a value of a tangent scene: zero when both parts are
+            return self.is_zero(x.a) and self.is_zero(x.b)
+        c = as_coef(x)
+        if c is None:
+            raise TypeError(f"is_zero of a {type(x).__name__} on the free algebra")
+        return simplify_coef(c) == 0
 
     def star(self, x: Any) -> Any:
         return x.star() if isinstance(x, NCPoly) else x

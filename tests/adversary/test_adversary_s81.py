@@ -90,3 +90,16 @@ def test_a_declared_gradient_at_a_point_that_moves_along_the_flow(method):
     for cid in ("s81-mp-capture", "s81-mp-capture-false"):
         assert recs[cid]["verdict"] == "error" and "not to first order" in recs[cid].get("message", ""), (
             cid, recs[cid]["verdict"])
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_quadratics_operator_checked_along_a_flow_on_every_scene(method):
+    """s81/own/quad_flow_free.py: an operator symmetric on V(n, r) only; the free scene's check of a dual number
+    crashed (an internal error), and now compares both parts.  The contradiction is refused, the honest claim
+    decided (free: proved for all n, r)."""
+    size = [] if method == "free" else ["--size", "3,2"]
+    recs = {cid: rec for (cid, _n, _r), rec in _records(OWN / "quad_flow_free.py", "--method", method, *size).items()}
+    assert recs["s81-qff-honest"]["verdict"] in TRUE, recs["s81-qff-honest"]
+    for cid in ("s81-qff-false", "s81-qff-truetwin"):
+        assert recs[cid]["verdict"] in HONEST and "linear and symmetric" in recs[cid].get("message", ""), (
+            cid, recs[cid]["verdict"], recs[cid].get("message", "")[:300])
