@@ -131,7 +131,7 @@ def symmetric_pair(s):
                  r"\Lambda_2(\xi+\eta,\zeta+\theta)|_x=\langle x-A,[\xi+\eta,\zeta+\theta]\rangle:\quad "
                  r"[\Lambda_1,\Lambda_1]=[\Lambda_2,\Lambda_2]=[\Lambda_1,\Lambda_2]=0")
 def pencil_is_poisson_and_compatible(s):
-    """(LAMBDA12): Λ1 and Λ2 on gl(n) are antisymmetric and satisfy the Jacobi identity, and so does Λ1 + Λ2, so they are compatible (Jacobi identity for linear functions with generic covectors at a generic point, the derivative in x taken exactly)."""
+    """(LAMBDA12): Λ1 and Λ2 on gl(n) are bivectors (antisymmetric, and additive in a covector) and satisfy the Jacobi identity, and so does Λ1 + Λ2, so they are compatible (Jacobi identity for linear functions with generic covectors at a generic point, the derivative in x taken exactly)."""
     checks = {}
     checks.update(poisson_checks(s, lambda1(), "Lambda1"))
     checks.update(poisson_checks(s, lambda2(), "Lambda2"))
