@@ -740,55 +740,8 @@ def gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
     return polynomial_gradient(s, lambda t, y: T(t, y, b, c), x, T.space.kind, T.space.index)
 
 
-def _reverse_gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat | None:
-    """The gradient of y ↦ Λ(b, c)|_y at x by reverse mode over the matrix operations of the form, or
-    None when the scene or an operation of the form is not one reverse mode differentiates."""
-    from stiefelsym.backends.reverse import Rev, RevMat, Unsupported, gradient, leaf
-    from stiefelsym.scene import ReverseScene, Scene
-    s = s
-    if type(s) is not Scene or s.field.name not in _REVERSE_FIELDS:
-        return None
-    try:
-        rs = ReverseScene(s)
-
-        def const(M: Mat) -> Mat:
-            return Mat._wrap_native(RevMat(M._untyped()), rs.field, M.tags, rs.tracker, M._coords)
-        lx = leaf(x._untyped())
-        xr = Mat._wrap_native(lx, rs.field, x.tags, rs.tracker, x._coords)
-        value = (T(rs, xr, const(b), const(c)))
-        if not isinstance(value, Rev):
-            return None
-        g = gradient(value, [lx], s.const(1))[0]
-    except Unsupported:
-        return None
-    if g is None:
-        return T.space.zero(s)
-    return T.space.project(g._retyped(s.field, x.tags, s.tracker).T * (-2))
-
-
 #: the fields whose scenes take the gradient in x by reverse mode (the others by a basis)
 _REVERSE_FIELDS = ("symbolic", "rational", "modular")
-
-
-def _basis_gradient_in_x(s: Any, T: PoissonTensor, x: Mat, b: Mat, c: Mat) -> Mat:
-    """The gradient at x of y ↦ Λ(b, c)|_y from the values of the form along a basis of the space."""
-    acc = T.space.zero(s)
-    if T.degree == 1:
-        # affine in x (which degree_residual checks): the derivative Λ(b, c)|_{x+e} − Λ(b, c)|_x does
-        # not depend on x and is taken at x = 0, in smaller expressions
-        zero = T.space.zero(s)
-        values0 = T(s, zero, b, c)
-        for e, dual in T.space.basis(s):
-            acc = acc + dual * (T(s, e, b, c) - values0)
-        return acc
-    w = [s.q(q.numerator, q.denominator) for q in _derivative_weights(T.degree)]
-    values0 = T(s, x, b, c)
-    for e, dual in T.space.basis(s):
-        deriv = values0 * w[0]
-        for j in range(1, T.degree + 1):
-            deriv = deriv + T(s, x + e * j, b, c) * w[j]
-        acc = acc + dual * deriv
-    return acc
 
 
 def jacobiator(s: Any, T: PoissonTensor, x: Mat, a: Mat, b: Mat, c: Mat) -> Scalar:

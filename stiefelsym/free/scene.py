@@ -942,13 +942,8 @@ class FreeScene(PaperObjects):
         return {"Z": self.realify(*out)}, []
 
     def _trace_form(self, value: Any) -> NCPoly:
-        value = entry_of(value) if isinstance(value, Mat) and value._shape() == (1, 1) else value
-        if isinstance(value, NCPoly) and value.is_scalar:
-            return value
-        c = as_coef(value)
-        if c is None:
-            raise refuse("a Lagrangian that is not a trace form", self.tracker)
-        return NCPoly.scalar(c)
+        """A Lagrangian's part (its kinetic or potential energy) as a scalar trace form, or refused."""
+        return self._scalar_trace_form(value, "a Lagrangian", entry_of)
 
     def at_point(self, Xv: Mat, Pv: Mat) -> "FreePointScene":
         """The problem at the point (Xv, Pv) of T*V (n×r blocks of this scene; refused unless they satisfy
