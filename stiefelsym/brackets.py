@@ -334,6 +334,7 @@ def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat, valu
     the IR, so that every method makes the check when it evaluates the graph (a constant step: its derivative
     along every flow is 0)."""
     _refuse_on_tape(s, "quadratic's operator")
+    _refuse_foreign_numbers(s, (x, value), "quadratic's operator")
     if not _vanishes(s, op(s, x) - value):
         raise ValueError(NOT_SYMMETRIC + " (and one function: its value at x differs between two evaluations)"
                          + _along_flow(s))
@@ -353,6 +354,7 @@ def gradient_check(s: Any, value: Callable[[Any, Mat], Scalar], x: Mat, G: Mat) 
             raise ValueError(NOT_GRADIENT)
         return x - x
     _refuse_on_tape(s, "MatrixFunction.grad")
+    _refuse_foreign_numbers(s, (x, G), "MatrixFunction.grad")
     if not _field_in(s, _AFFINE_CHECKED):
         return x - x
     if not (_value_gradient(s, value, x) - G).is_zero():
@@ -368,14 +370,29 @@ def _along_flow(s: Any) -> str:
     return ""
 
 
+def _refuse_foreign_numbers(s: Any, mats: tuple, what: str) -> None:
+    """Refuse a check on a scene whose numbers are not those of its matrices' derivatives: a point (or gradient) that
+    moves with a derivative or a gradient taken on another scene (dual numbers, a reverse tape) handed with the
+    claim's own scene, f.grad(s, x_t) inside s.d(lambda t: ...).  The check on s would see the value only."""
+    name = getattr(getattr(s, "_field", None), "name", "")
+    for M in mats:
+        m = getattr(getattr(M, "_field", None), "name", "") if isinstance(M, Mat) else ""
+        if m != name and m.startswith(("dual(", "reverse(")) and not name.startswith(("dual(", "reverse(")):
+            raise ValueError(f"{what}: taken on a scene at a point (or with a gradient) that moves with a derivative "
+                             "or gradient of another scene: take it on the scene of the function being "
+                             "differentiated (f.grad(t, x) inside s.d(lambda t: ...))")
+
+
 def _refuse_on_tape(s: Any, what: str) -> None:
-    """Refuse a check step evaluated on a reverse tape (inside the function of s.gradient, at arguments that move
+    """Refuse a check step evaluated on a reverse tape (inside the function of a gradient, at arguments that move
     with the gradient's variables): the check holds at the point, which says nothing of the adjoints handed
-    through it (a gradient right on V(n, r) and not off it would have its wrong derivative taken)."""
+    through it (a gradient right on V(n, r) and not off it would have its wrong derivative taken).  Refused as an
+    operation reverse mode does not differentiate: the caller takes the gradient by forward passes (the scene's
+    dual numbers, where the check is made in both parts) or from a basis (:func:`_value_gradient`)."""
     if "reverse(" in getattr(getattr(s, "_field", None), "name", ""):
-        raise ValueError(f"{what}: the gradient (s.gradient) of a function that takes it at a point moving with the "
-                         "gradient's variables: its check holds at the point only, not for the derivative taken "
-                         "through it")
+        from stiefelsym.backends.reverse import Unsupported
+        raise Unsupported(f"{what}: a gradient through a check made at the point (its derivative is not checked "
+                          "on a reverse tape)")
 
 
 #: the refusal of a MatrixFunction whose gradient is not its value's

@@ -103,3 +103,45 @@ def test_quadratics_operator_checked_along_a_flow_on_every_scene(method):
     for cid in ("s81-qff-false", "s81-qff-truetwin"):
         assert recs[cid]["verdict"] in HONEST and "linear and symmetric" in recs[cid].get("message", ""), (
             cid, recs[cid]["verdict"], recs[cid].get("message", "")[:300])
+
+
+REVIEW = ADVERSARY / "s81" / "review"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_the_reviews_false_refusals_are_decided(method):
+    """The review of the change (s81/review, R1, R2): a function whose value is a bracket of other functions (its
+    gradient's check takes the value's gradient by reverse mode, through the inner functions' checked gradients), and
+    the gradient or bracket of a function taking a declared gradient at a moving point, were refused on the reverse
+    tape.  The tape now gives way to forward passes (the scene's dual numbers check both parts) or to a basis, and the
+    claims are decided (their truth: the files' docstrings and logs/truth_check.log)."""
+    size = [] if method == "free" else ["--size", "3,2"]
+    recs = {cid: rec for (cid, _n, _r), rec in _records(REVIEW / "refusals.py", "--method", method, *size).items()}
+    for cid in ("r81-ref-bb-true", "r81-ref-jac-true") + (() if method == "free" else ("r81-ref-sb-true",)):
+        assert recs[cid]["verdict"] in TRUE, (cid, method, recs[cid]["verdict"], recs[cid].get("message", "")[:300])
+    for cid in ("r81-ref-bb-false", "r81-ref-jac-false", "r81-ref-sb-false"):
+        assert recs[cid]["verdict"] == ("undecided" if method == "free" else "fails"), (cid, method, recs[cid])
+    if method != "free":
+        recs = {cid: r for (cid, _n, _r), r in _records(REVIEW / "natural.py", "--method", method, *size).items()}
+        assert recs["r81-nat-grad-true"]["verdict"] in TRUE and recs["r81-nat-grad-false"]["verdict"] == "fails"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_a_check_on_the_claims_scene_at_a_moving_point_is_refused_clearly(method):
+    """The review's M1, M2 and L1: f.grad(s, x_t) with the claim's scene s inside s.d or s.gradient (the point, or
+    the gradient, moves with the other scene's numbers) crashed (AttributeError on dual or reverse matrices) and, on
+    the free scene, dropped the derivative part (L1, masked by the division probe).  It is now refused in words;
+    no claim of the files gets a wrong verdict."""
+    size = [] if method == "free" else ["--size", "3,2"]
+    truth = {"r81-ro-true": True, "r81-ro-false": False, "r81-ro-br-true": True, "r81-ro-br-false": False,
+             "r81-ro2-true": True, "r81-ro2-false": False, "r81-oc-true": True, "r81-oc-false": False,
+             "r81-fs-true": True, "r81-fs-false": False, "r81-fs2-true": True, "r81-fs2-false": False,
+             "r81-cv-true": True, "r81-cv-false": False, "r81-cv2-true": True, "r81-cv2-false": False}
+    for name in ("reverse_outer.py", "outer_check.py", "free_strip.py", "closure_value.py"):
+        for (cid, _n, _r), rec in _records(REVIEW / name, "--method", method, *size).items():
+            if cid not in truth:
+                continue
+            v = rec["verdict"]
+            assert v not in (("fails",) if truth[cid] else TRUE), (cid, method, v)
+            assert "AttributeError" not in rec.get("message", "") and "SympifyError" not in rec.get("message", ""), (
+                cid, method, rec.get("message", "")[:300])
