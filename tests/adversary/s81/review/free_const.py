@@ -14,7 +14,7 @@ the derivative), declared (t, y) ↦ t.X s.Xᵀ: d∇h = 0 (true), V Xᵀ (false
 Controls: the honest declared gradient 0: d∇h = 0 (true) / = V Xᵀ (false): r81-fh-true / r81-fh-false.
 """
 from stiefelsym import admissible, claim
-from stiefelsym.brackets import GL_N, MatrixFunction, lie_poisson, linear
+from stiefelsym.brackets import GL_N, MatrixFunction
 
 SZ = admissible(n_min=3, n_max=3)
 
