@@ -343,7 +343,7 @@ def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat, valu
 
 
 def gradient_check(s: Any, value: Callable[[Any, Mat], Scalar], x: Mat, G: Mat) -> Mat:
-    """The zero matrix of x's shape, once ``G`` is the gradient at x of y ↦ value(s, y) for <,> (taken in the space of
+    """The zero matrix of G's shape (x's transpose's: <a, b> = −½ tr(ab) pairs an m×k point with a k×m gradient), once ``G`` is the gradient at x of y ↦ value(s, y) for <,> (taken in the space of
     all matrices of x's shape): one step of the IR (a constant step: its derivative along every flow is 0), so that
     every method makes the check when it evaluates the graph.  A coordinate scene takes the value's gradient at x by
     reverse mode (over a field without it, or for an operation it does not differentiate, by a basis:
@@ -352,14 +352,14 @@ def gradient_check(s: Any, value: Callable[[Any, Mat], Scalar], x: Mat, G: Mat) 
     if hasattr(type(s), "_engine_letters"):            # the dimension-free scene
         if not s.declared_gradient_holds(value, x, G):
             raise ValueError(NOT_GRADIENT)
-        return x - x
+        return G - G
     _refuse_on_tape(s, "MatrixFunction.grad")
     _refuse_foreign_numbers(s, (x, G), "MatrixFunction.grad")
     if not _field_in(s, _AFFINE_CHECKED):
-        return x - x
+        return G - G
     if not (_value_gradient(s, value, x) - G).is_zero():
         raise ValueError(NOT_GRADIENT + _along_flow(s))
-    return x - x
+    return G - G
 
 
 def _along_flow(s: Any) -> str:
@@ -673,7 +673,7 @@ def _engine_element(s: Any, space: Space, tag: str) -> Mat:
 _affine_form_gradient = form_gradient
 form_gradient = primitive(form_gradient, like={"form": "point"}, returns=("like", "point"))
 symmetric_operator_check = primitive(symmetric_operator_check, like={"op": "x"}, returns=("like", "x"), zero=True)
-gradient_check = primitive(gradient_check, like={"value": "x"}, returns=("like", "x"), zero=True)
+gradient_check = primitive(gradient_check, like={"value": "x"}, returns=("like", "G"), zero=True)
 
 
 #: the fields whose test of zero decides the degree in x that :func:`polynomial_gradient` derives (exact); on

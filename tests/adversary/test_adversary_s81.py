@@ -145,3 +145,16 @@ def test_a_check_on_the_claims_scene_at_a_moving_point_is_refused_clearly(method
             assert v not in (("fails",) if truth[cid] else TRUE), (cid, method, v)
             assert "AttributeError" not in rec.get("message", "") and "SympifyError" not in rec.get("message", ""), (
                 cid, method, rec.get("message", "")[:300])
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_a_function_of_a_rectangular_matrix_has_a_transposed_gradient(method):
+    """s81/own/rectangular_gradient.py: the gradient of a function of an n×r point is r×n (the review's
+    r81-nat-nr, refused because the check's zero had the point's shape); a declared gradient of the wrong value
+    is refused."""
+    size = [] if method == "free" else ["--size", "3,2"]
+    recs = {c: r for (c, _n, _r), r in _records(OWN / "rectangular_gradient.py", "--method", method, *size).items()}
+    assert recs["s81-nr-true"]["verdict"] in TRUE, recs["s81-nr-true"]
+    assert recs["s81-nr-false"]["verdict"] == ("undecided" if method == "free" else "fails")
+    assert recs["s81-nr-wrong-declared"]["verdict"] in HONEST and "not the gradient" in recs[
+        "s81-nr-wrong-declared"].get("message", "")
