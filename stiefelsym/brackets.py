@@ -237,7 +237,8 @@ def pairing(s: Any, a: Mat, b: Mat) -> Scalar:
 
 @dataclass(frozen=True)
 class MatrixFunction:
-    """A scalar function h on a matrix space with its gradient ∇h (dh(δ) = <∇h, δ>, taken in gl)."""
+    """A scalar function h on a matrix space with its gradient ∇h (dh(δ) = <∇h, δ>, taken in the space of all
+    matrices of the point's shape: for an m×k point, ∇h is k×m)."""
 
     value: Callable[[Any, Mat], Scalar]
     gradient: Callable[[Any, Mat], Mat]
