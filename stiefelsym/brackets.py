@@ -378,7 +378,8 @@ def _refuse_foreign_numbers(s: Any, mats: tuple, what: str) -> None:
     name = getattr(getattr(s, "_field", None), "name", "")
     for M in mats:
         m = getattr(getattr(M, "_field", None), "name", "") if isinstance(M, Mat) else ""
-        if m != name and m.startswith(("dual(", "reverse(")) and not name.startswith(("dual(", "reverse(")):
+        # M's numbers wrap the scene's (dual or reverse numbers over them): a derivative or gradient deeper than s
+        if m != name and m.startswith(("dual(", "reverse(")) and name in m:
             raise ValueError(f"{what}: taken on a scene at a point (or with a gradient) that moves with a derivative "
                              "or gradient of another scene: take it on the scene of the function being "
                              "differentiated (f.grad(t, x) inside s.d(lambda t: ...))")
@@ -421,8 +422,8 @@ def _value_gradient(s: Any, value: Callable[[Any, Mat], Scalar], x: Mat) -> Mat:
             return D._retyped(s.field, x.tags, s.tracker).T * (-2)
     m, k = x.tags
     if m != k or m not in ("n", "r"):
-        raise ValueError("MatrixFunction: the gradient of a function of a matrix that is not square, where the "
-                         "scene takes no reverse gradient")
+        raise ValueError("MatrixFunction: the gradient of a function of a matrix that is not n×n or r×r, where the "
+                         "scene takes no reverse gradient (inside a derivative along a flow, or over floats or balls)")
     return _polynomial_gradient(s, value, x, "gl", m)
 
 
