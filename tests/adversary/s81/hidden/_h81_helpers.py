@@ -1,6 +1,5 @@
 """Helpers of the h81 trial (no claims): Hamiltonians and functions on so(n), so(r), gl(n)."""
-from stiefelsym import comm
-from stiefelsym.brackets import GL_N, SO_N, SO_R, lambda1, lie_poisson, linear, quadratic, skew, sym, trace_power
+from stiefelsym.brackets import linear, quadratic, trace_power
 
 
 def Phi(t):
