@@ -247,8 +247,10 @@ class MatrixFunction:
     def __call__(self, s: Any, x: Mat) -> Scalar:
         v = self.value(s, x)
         # the value the claim computes with is the one the gradient's check takes (a value that tests its point would
-        # have the check pass for another function)
-        same_inline_function(v, self.value, s, (x,), f"the value of {self.name}")
+        # have the check pass for another function); held under the function object itself, whatever its field
+        # holds at this call (a value swapped after the gradient was checked, object.__setattr__ on the frozen
+        # dataclass or a subclass's attribute lookup, is another function at one of the calls: stop 81's sweep)
+        same_inline_function(v, self, s, (x,), f"the value of {self.name}")
         return v
 
     def grad(self, s: Any, x: Mat) -> Mat:
@@ -257,7 +259,7 @@ class MatrixFunction:
         function it is not).  The value is one function of the point wherever the claim evaluates it."""
         G = self.gradient(s, x)
         zero = gradient_check(s, self.value, x, G)
-        same_step_function(zero, self.value, f"the value of {self.name}", inline=True)
+        same_step_function(zero, self, f"the value of {self.name}", inline=True)
         return G + zero
 
     def pullback(self, moment: Callable[[Any], Mat]) -> Function:

@@ -200,3 +200,21 @@ def test_the_hidden_trials_gradients_through_gradients_are_decided(method):
                 assert v in ("proved", "undecided"), (cid, method, v, rec.get("message", "")[:300])
             else:
                 assert v in TRUE, (cid, method, v, rec.get("message", "")[:300])
+
+
+CLASSES = ADVERSARY / "s81" / "classes"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_a_functions_value_swapped_after_its_gradient_was_checked(method):
+    """The class sweep's W1 (s81/classes/c4_state.py): the value of a MatrixFunction swapped after its gradient was
+    checked, by object.__setattr__ on the frozen dataclass or by a subclass's attribute lookup, was held under the
+    function object its field held at each call, so the claim computed with another function than the one checked
+    (the zero function with a nonzero bracket came back).  The holds are now under the MatrixFunction itself."""
+    size = [] if method == "free" else ["--size", "3,2"]
+    recs = {c: r for (c, _n, _r), r in _records(CLASSES / "c4_state.py", "--method", method, *size).items()}
+    for cid in ("c4-swap-false", "c4-swapsum-false", "c4-swapbr-false", "c4-cell-false", "c4-twograd-false",
+                "c4-prop-false"):
+        assert recs[cid]["verdict"] not in TRUE, (cid, method, recs[cid]["verdict"])
+    for cid in ("c4-swap-true", "c4-swapbr-true", "c4-cell-true", "c4-prop-true"):
+        assert recs[cid]["verdict"] in TRUE, (cid, method, recs[cid]["verdict"], recs[cid].get("message", "")[:300])
