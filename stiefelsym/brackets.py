@@ -245,12 +245,14 @@ class MatrixFunction:
     name: str = "h"
 
     def __call__(self, s: Any, x: Mat) -> Scalar:
-        v = self.value(s, x)
+        f = self.value
+        v = f(s, x)
         # the value the claim computes with is the one the gradient's check takes (a value that tests its point would
-        # have the check pass for another function); held under the function object itself, whatever its field
+        # have the check pass for another function).  Held under the function object itself, whatever its field
         # holds at this call (a value swapped after the gradient was checked, object.__setattr__ on the frozen
-        # dataclass or a subclass's attribute lookup, is another function at one of the calls: stop 81's sweep)
-        same_inline_function(v, self, s, (x,), f"the value of {self.name}")
+        # dataclass or a subclass's attribute lookup, is another function at one of the calls: stop 81's sweep), and
+        # under the value's function too (copies of one function object share it: stop 81's third review)
+        _hold_value(v, (self, f), s, x, self.name)
         return v
 
     def grad(self, s: Any, x: Mat) -> Mat:
@@ -258,13 +260,16 @@ class MatrixFunction:
         built with a gradient of another, MatrixFunction(lambda s, x: 0, lambda s, x: s.A), had the brackets of a
         function it is not).  The value is one function of the point wherever the claim evaluates it."""
         G = self.gradient(s, x)
-        zero = gradient_check(s, self.value, x, G)
-        same_step_function(zero, self, f"the value of {self.name}", inline=True)
+        f = self.value
+        zero = gradient_check(s, f, x, G)
+        for o in (self, f):
+            same_step_function(zero, o, f"the value of {self.name}", inline=True)
         return G + zero
 
     def pullback(self, moment: Callable[[Any], Mat]) -> Function:
-        """h∘moment, a function of the scene."""
-        return lambda t: self(t, moment(t))
+        """h∘moment, a function of the scene (its value through the held call, never a subclass's own __call__: the
+        function whose gradient is checked, stop 81's third review)."""
+        return lambda t: MatrixFunction.__call__(self, t, moment(t))
 
     # (the values of a sum, a product or a multiple are its parts' values through their held calls, f(s, x): a part
     # whose value tests its point is one function there and in the claim, stop 80's second review)
@@ -286,6 +291,13 @@ class MatrixFunction:
             return same_scene_function(c, s, c(s), "the scalar of MatrixFunction.scaled")
         return MatrixFunction(lambda s, x: MatrixFunction.__call__(self, s, x) * c_(s),
                               lambda s, x: self.gradient(s, x) * c_(s), f"c·{self.name}")
+
+
+def _hold_value(v: Any, objs: tuple, s: Any, x: Mat, name: str) -> None:
+    """Hold a MatrixFunction's value v = f(s, x) under each of ``objs`` (the function object and its value's
+    function)."""
+    for o in objs:
+        same_inline_function(v, o, s, (x,), f"the value of {name}")
 
 
 def _gradient(f: Any, s: Any, x: Mat) -> Mat:

@@ -218,3 +218,25 @@ def test_a_functions_value_swapped_after_its_gradient_was_checked(method):
         assert recs[cid]["verdict"] not in TRUE, (cid, method, recs[cid]["verdict"])
     for cid in ("c4-swap-true", "c4-swapbr-true", "c4-cell-true", "c4-prop-true"):
         assert recs[cid]["verdict"] in TRUE, (cid, method, recs[cid]["verdict"], recs[cid].get("message", "")[:300])
+
+
+REVIEW3 = ADVERSARY / "s81" / "review3"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_copies_of_one_function_and_a_subclass_call(method):
+    """The third review (s81/review3/w.py): copies of one MatrixFunction (copy.copy, dataclasses.replace, a rebuild
+    from its fields) share one value function that tests its point or keeps state; held under the instance alone,
+    one copy's value and another's checked gradient proved a contradiction (W1, a regression of the sweep's fix).
+    The value is now held under the instance and under its value's function.  A subclass overriding __call__ was
+    reached by the engine's pullback (W2, older): the pullback now evaluates the held value."""
+    size = [] if method == "free" else ["--size", "3,2"]
+    for (cid, _n, _r), rec in _records(REVIEW3 / "w.py", "--method", method, *size).items():
+        v = rec["verdict"]
+        if cid.endswith("-false"):
+            assert v not in TRUE, (cid, method, v)
+        else:
+            assert v in TRUE, (cid, method, v, rec.get("message", "")[:300])
+    for name in ("h.py", "h2.py"):
+        for (cid, _n, _r), rec in _records(REVIEW3 / name, "--method", method, *size).items():
+            assert rec["verdict"] != "error" or cid.startswith("h-nr-"), (name, cid, method, rec.get("message", "")[:300])
