@@ -14,7 +14,7 @@ h-nr: one trace_power(2) instance used at an n×n and an r×r point: tr(Φ²) an
   h(Φ) = tr Φ², h(Ψ) = tr Ψ² (trace_power(2) at x is tr x²: M = skew(x) + sym(x) = x).  TRUE; twin: 2·tr Φ².
 """
 from stiefelsym import admissible, claim
-from stiefelsym.brackets import (GL_N, SO_N, MatrixFunction, casimir_residual, lambda1, lambda2, lie_poisson, linear,
+from stiefelsym.brackets import (GL_N, SO_N, MatrixFunction, casimir_residual, lambda2, lie_poisson, linear,
                                  pencil, quadratic, trace_power)
 
 SZ = admissible(n_max=3, n_min=2)
