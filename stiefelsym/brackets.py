@@ -252,7 +252,8 @@ class MatrixFunction:
         # holds at this call (a value swapped after the gradient was checked, object.__setattr__ on the frozen
         # dataclass or a subclass's attribute lookup, is another function at one of the calls: stop 81's sweep), and
         # under the value's function too (copies of one function object share it: stop 81's third review)
-        _hold_value(v, (self, f), s, x, self.name)
+        for o in (self, f):
+            same_inline_function(v, o, s, (x,), f"the value of {self.name}")
         return v
 
     def grad(self, s: Any, x: Mat) -> Mat:
@@ -291,13 +292,6 @@ class MatrixFunction:
             return same_scene_function(c, s, c(s), "the scalar of MatrixFunction.scaled")
         return MatrixFunction(lambda s, x: MatrixFunction.__call__(self, s, x) * c_(s),
                               lambda s, x: self.gradient(s, x) * c_(s), f"c·{self.name}")
-
-
-def _hold_value(v: Any, objs: tuple, s: Any, x: Mat, name: str) -> None:
-    """Hold a MatrixFunction's value v = f(s, x) under each of ``objs`` (the function object and its value's
-    function)."""
-    for o in objs:
-        same_inline_function(v, o, s, (x,), f"the value of {name}")
 
 
 def _gradient(f: Any, s: Any, x: Mat) -> Mat:
@@ -346,8 +340,8 @@ def quadratic(op: Callable[[Any, Mat], Mat] | None = None, name: str = "½<x, �
 def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat, value: Mat) -> Mat:
     """The zero matrix of x's shape, once op is checked linear and symmetric for <,> (:func:`_check_symmetric`)
     and its value at x is the claim's ``value`` (the same function where the claim evaluates it): one step of
-    the IR, so that every method makes the check when it evaluates the graph (a constant step: its derivative
-    along every flow is 0)."""
+    the IR, so that every method makes the check when it evaluates the graph (a check made at the point: inside a
+    derivative or a gradient whose variables move its arguments, the scene makes it, see :func:`gradient_check`)."""
     _refuse_on_tape(s, "quadratic's operator")
     _refuse_foreign_numbers(s, (x, value), "quadratic's operator")
     if not _vanishes(s, op(s, x) - value):
@@ -359,8 +353,9 @@ def symmetric_operator_check(s: Any, op: Callable[[Any, Mat], Mat], x: Mat, valu
 
 def gradient_check(s: Any, value: Callable[[Any, Mat], Scalar], x: Mat, G: Mat) -> Mat:
     """The zero matrix of G's shape (x's transpose's: <a, b> = −½ tr(ab) pairs an m×k point with a k×m gradient), once ``G`` is the gradient at x of y ↦ value(s, y) for <,> (taken in the space of
-    all matrices of x's shape): one step of the IR (a constant step: its derivative along every flow is 0), so that
-    every method makes the check when it evaluates the graph.  A coordinate scene takes the value's gradient at x by
+    all matrices of x's shape): one step of the IR, so that every method makes the check when it evaluates the
+    graph.  A check made at the point: where its arguments move with a derivative along a flow, the scene's dual
+    numbers make it in both parts; on a reverse tape it is not taken (:func:`_refuse_on_tape`).  A coordinate scene takes the value's gradient at x by
     reverse mode (over a field without it, or for an operation it does not differentiate, by a basis:
     :func:`polynomial_gradient`); the dimension-free scene by cyclic differentiation at a letter of the engine's
     own, put x in its place (:meth:`~stiefelsym.free.FreeScene.declared_gradient_holds`)."""
@@ -377,10 +372,16 @@ def gradient_check(s: Any, value: Callable[[Any, Mat], Scalar], x: Mat, G: Mat) 
     return G - G
 
 
+def _numbers(x: Any) -> str:
+    """The name of a scene's (or a matrix's) number system: "dual(...)" on a derivative's dual numbers, "reverse(...)"
+    on a gradient's tape, "" for anything without one."""
+    return getattr(getattr(x, "_field", None), "name", "")
+
+
 def _along_flow(s: Any) -> str:
     """What a check's refusal adds on the dual numbers of a derivative along a flow (the check compares both parts:
     what holds at the point must hold to first order along the flow)."""
-    if "dual(" in getattr(getattr(s, "_field", None), "name", ""):
+    if "dual(" in _numbers(s):
         return " (inside a derivative along a flow: it holds at the point, not to first order along the flow)"
     return ""
 
@@ -389,9 +390,9 @@ def _refuse_foreign_numbers(s: Any, mats: tuple, what: str) -> None:
     """Refuse a check on a scene whose numbers are not those of its matrices' derivatives: a point (or gradient) that
     moves with a derivative or a gradient taken on another scene (dual numbers, a reverse tape) handed with the
     claim's own scene, f.grad(s, x_t) inside s.d(lambda t: ...).  The check on s would see the value only."""
-    name = getattr(getattr(s, "_field", None), "name", "")
+    name = _numbers(s)
     for M in mats:
-        m = getattr(getattr(M, "_field", None), "name", "") if isinstance(M, Mat) else ""
+        m = _numbers(M) if isinstance(M, Mat) else ""
         # M's numbers wrap the scene's (dual or reverse numbers over them): a derivative or gradient deeper than s
         if m != name and m.startswith(("dual(", "reverse(")) and name in m:
             raise ValueError(f"{what}: taken on a scene at a point (or with a gradient) that moves with a derivative "
@@ -405,7 +406,7 @@ def _refuse_on_tape(s: Any, what: str) -> None:
     through it (a gradient right on V(n, r) and not off it would have its wrong derivative taken).  Refused as an
     operation reverse mode does not differentiate: the caller takes the gradient by forward passes (the scene's
     dual numbers, where the check is made in both parts) or from a basis (:func:`_value_gradient`)."""
-    if "reverse(" in getattr(getattr(s, "_field", None), "name", ""):
+    if "reverse(" in _numbers(s):
         from stiefelsym.backends.reverse import Unsupported
         raise Unsupported(f"{what}: a gradient through a check made at the point (its derivative is not checked "
                           "on a reverse tape)")
@@ -673,7 +674,7 @@ def _check_affine(s: Any, form: Callable[[Any, Mat], Scalar], space: Space, base
 def _field_in(s: Any, fields: tuple[str, ...]) -> bool:
     """Whether the scene's number system (under the dual numbers of a flow, or on a reverse tape: the
     field of the values) is one of ``fields`` (names or their prefixes)."""
-    name = getattr(getattr(s, "_field", None), "name", "")
+    name = _numbers(s)
     while name.endswith(")") and name.startswith(("dual(", "reverse(")):
         name = name[name.index("(") + 1:-1]
     return any(name == f or name.startswith(f) for f in fields)

@@ -544,12 +544,8 @@ class _Derivative:
             raise Unsupported("a function of the scene defined inside the function (a nested derivative, "
                               "gradient, flow or bracket)")
         if op == "prim" and type(a[0]) is Named and a[0].qualname in ZERO_PRIMITIVES:
-            if any(type(x) is Ref and self.k in self.deps[x.i] for x in a[1:]):
-                # a check made at the point: along a flow it must hold to first order as well (a gradient right
-                # at the point and not along the flow would pass with derivative 0), which the scene's dual
-                # numbers check (both parts)
-                raise Unsupported(f"an engine check ({a[0].qualname.rsplit('.', 1)[-1]}) at a moving argument")
-            return None                     # zero wherever it is defined: constant along every flow
+            self.check_at_rest(a)
+            return None                     # zero wherever it is defined, at arguments that do not move
         if op == "prim" and type(a[0]) is Named and a[0].qualname in CONSTANT_PRIMITIVES:
             if any(self.moves(x) for x in a[1:]):
                 raise Unsupported(f"an engine step ({a[0].qualname.rsplit('.', 1)[-1]}) at a moving argument")
@@ -604,6 +600,14 @@ class _Derivative:
         a = g.args[j]
         return (type(a[0]) is Named and a[0].qualname == TANGENT and len(a) == 4 and type(a[1]) is Ref
                 and g.ops[a[1].i] == "scene" and g.args[a[1].i] == (self.k,))
+
+    def check_at_rest(self, a: tuple) -> None:
+        """A check step (a zero primitive) is constant, and hands its arguments no adjoint, only where none of its
+        arguments depends on the function's scene: a check made at the point says nothing of its first order (a
+        gradient right at the point and not along the flow, or on V(n, r) and not off it, would have its wrong
+        derivative taken).  Elsewhere it is left to the scene, whose dual numbers make the check in both parts."""
+        if any(type(x) is Ref and self.k in self.deps[x.i] for x in a[1:]):
+            raise Unsupported(f"an engine check ({a[0].qualname.rsplit('.', 1)[-1]}) at a moving argument")
 
     def moves(self, a: Any) -> bool:
         """Whether an argument of the body moves with the point (reads the function's scene through
@@ -1076,12 +1080,8 @@ class _Gradient(_Derivative):
         elif op == "list":
             return                          # the rows of a matrix of given entries (s.mat sends to its cells)
         elif op == "prim" and type(a[0]) is Named and a[0].qualname in ZERO_PRIMITIVES:
-            if any(type(x) is Ref and self.k in self.deps[x.i] for x in a[1:]):
-                # a check made at the point of the gradient's variables: the adjoint of its arguments is the
-                # scene's business (a gradient right at the point is no check of its derivative)
-                raise Unsupported(f"an engine check ({a[0].qualname.rsplit('.', 1)[-1]}) at a moving argument "
-                                  "inside the function of a gradient")
-            return                          # zero wherever defined: no adjoint reaches its arguments
+            self.check_at_rest(a)
+            return                          # zero wherever defined, at arguments that do not move: no adjoint
         elif op == "prim" and _constant_vector(a[0]):
             if any(self.moving(x) for x in a[1:]):
                 raise Unsupported("a coordinate basis vector at a moving argument inside the function of a gradient")

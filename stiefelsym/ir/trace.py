@@ -45,8 +45,9 @@ PRIMITIVES: dict[str, Callable] = {}
 #: engine steps whose value does not move with the point (their derivative along a flow is 0), by
 #: qualified name
 CONSTANT_PRIMITIVES: dict[str, Callable] = {}
-#: engine steps whose value is zero wherever they are defined (a check of their arguments that raises otherwise):
-#: their derivative along every flow and their adjoint are 0, whatever their arguments
+#: engine steps whose value is zero wherever they are defined (a check of their arguments that raises otherwise): a
+#: check made at the point, so their derivative along a flow and their adjoint are 0 only where no argument moves
+#: (elsewhere the scene evaluates them, its dual numbers checking both parts: see :mod:`.derivative`)
 ZERO_PRIMITIVES: dict[str, Callable] = {}
 #: engine constants a claim may hand to a primitive, by identity
 _NAMED: dict[int, tuple[str, Any]] = {}
