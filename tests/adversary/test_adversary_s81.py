@@ -240,3 +240,15 @@ def test_copies_of_one_function_and_a_subclass_call(method):
     for name in ("h.py", "h2.py"):
         for (cid, _n, _r), rec in _records(REVIEW3 / name, "--method", method, *size).items():
             assert rec["verdict"] != "error" or cid.startswith("h-nr-"), (name, cid, method, rec.get("message", "")[:300])
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_a_gradient_written_with_the_points_shape(method):
+    """The stop's last own attempt (s81/own/forgot_transpose.py): the gradient of a function of an n×r point written
+    n×r (2y for 2yᵀ), as a careless user would, is refused at every size (r = n included, where the shapes agree and
+    the types do not); the right one is decided."""
+    for (cid, _n, _r), rec in _records(OWN / "forgot_transpose.py", "--method", method).items():
+        if cid == "s81-ft-false":
+            assert rec["verdict"] in HONEST, (cid, method, rec["verdict"])
+        else:
+            assert rec["verdict"] in TRUE, (cid, method, rec["verdict"], rec.get("message", "")[:300])
