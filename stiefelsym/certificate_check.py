@@ -148,11 +148,33 @@ def check_certificate(data: Any) -> CheckReport:
         if bad:
             return CheckReport(False, f"the coefficient {bad[0]} has a pole where {' and '.join(ones)} "
                                       f"{'hold' if len(ones) > 1 else 'holds'}", seconds=time.perf_counter() - t0)
+    # a denominator in the sizes is a pole of the proof at the sizes where it vanishes (1/(n − r) at r = n): the
+    # certificate is a proof for all n, r only where no coefficient's denominator can vanish at a size
+    for t in (t for e in entries for t in e["residual"] + e["terms"]):
+        if may_vanish_at_a_size(den := coefficient(t["coef"]).as_numer_denom()[1].subs(where if ones else {})):
+            return CheckReport(False, f"the coefficient {t['coef']} has the denominator {den}, which may be 0 at "
+                                      "some n, r: no proof for all n, r", seconds=time.perf_counter() - t0)
     if ctx.sylvester:   # (what the multipliers' relations rest on)
         at += (f" (metric realization, A positive definite: {', '.join(ctx.sylvester)} the unique solutions of their "
                "relations rho, re-derived from the flows; Pi = 0 by uniqueness)")
     return CheckReport(True, f"{len(entries)} entries, {terms} terms: every certificate expands to its residual{at}",
                        len(entries), terms, time.perf_counter() - t0)
+
+
+def may_vanish_at_a_size(den: Any) -> bool:
+    """Whether the polynomial ``den`` (in the sizes n, r and generic parameters) may be identically 0 in the
+    parameters at some size: False when it has no n, r, or when one of its coefficients as a polynomial in the
+    parameters is a polynomial in n, r with positive coefficients (nonzero at every size); else True (n − r)."""
+    sizes, by_params = {se.Symbol("n"), se.Symbol("r")}, {}
+    for mono, c in se.expand(den).as_coefficients_dict().items():
+        powers = mono.as_powers_dict().items() if c != 0 and mono != 1 else ()
+        param = se.Mul(*[f ** k for f, k in powers if f not in sizes])
+        by_params[param] = by_params.get(param, 0) + c * se.Mul(*[f ** k for f, k in powers if f in sizes])
+    if not any(getattr(se.sympify(c), "free_symbols", set()) & sizes for c in by_params.values()):
+        return False
+    return not any(se.expand(c) != 0 and all(
+        se.sympify(k).is_Number and k > 0 and set(getattr(m, "free_symbols", ())) <= sizes
+        for m, k in se.expand(c).as_coefficients_dict().items() if k != 0) for c in by_params.values())
 
 
 def check_cases(data: dict) -> CheckReport:

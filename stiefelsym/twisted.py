@@ -526,7 +526,7 @@ def _traced_field_strength(t: Any, bound: dict) -> None:
 for _name in ("ambient_bracket", "constraint_bracket_matrix", "bracket", "ambient_flow", "flow",
               "multiplier_flow", "form"):
     globals()[_name] = primitive(globals()[_name], check=_traced_field_strength)
-magnetic_matrix = primitive(magnetic_matrix)
+magnetic_matrix = primitive(magnetic_matrix, returns=("mat", ("r", "r")))
 # the basis vectors of R^r do not move with the point: their derivative along a flow is 0
 for _name in ("basis_vector", "last_basis_vector", "leading_basis_vectors", "block_projector", "reflection",
               "eigenspace_projector", "kernel_frame", "kernel_annihilator"):

@@ -25,7 +25,7 @@ from stiefelsym.backends.fields import Dual, DualField, Field
 from stiefelsym.backends.matrix import CoordinateTracker, Mat, definite
 from stiefelsym.scene import (ENGINE_CHECK_DEPTH, FRESH, check_generic_kind, user_name, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
                               engine_check, map_entries)
-from stiefelsym.free.algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, coef_latex, derivation,
+from stiefelsym.free.algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, divisor, coef_latex, derivation,
                       letter_pair, mark_moving, record_refusal, refuse, skew_letter, substitute, symmetric_letter, trace)
 from stiefelsym.free.mat import FreeBackend, FreeDualBackend, entry_of, one_block
 from stiefelsym.free.rewriting import (_NONZERO_NUMBER_TYPES, _SIMPLE, Certificate, Order, Reduction,
@@ -203,7 +203,7 @@ def add_resolvent(system: RewritingSystem, mu: Any, resolvents: dict[Letter, Any
     for S, nu in resolvents.items():
         if simplify_coef(nu - mu) == 0:
             continue
-        rhs = (_w(R) - _w(S)) * (se.Integer(1) / (nu - mu))
+        rhs = (_w(R) - _w(S)) * (se.Integer(1) / divisor(nu - mu))
         why = f"resolvent identity R_mu R_nu = (R_mu - R_nu)/(nu - mu), mu = {mu}, nu = {nu} (mu != nu)"
         s_left, s_right = hypothesis("res_left", S, nu), hypothesis("res_right", S, nu)
         # (nu − mu) R S − R + S = R [(nu I − A) S − I] − [R (mu I − A) − I] S
@@ -231,7 +231,7 @@ def _ainv_resolvent_rules(system: RewritingSystem, R: Letter, mu: Any) -> None:
         else:
             system.add_rule((AINV,), -_w(R), why, name=f"Ainv=-{R}", cofactors=cofactors)
         return
-    rhs = (_w(R) + _w(AINV)) * (se.Integer(1) / mu)
+    rhs = (_w(R) + _w(AINV)) * (se.Integer(1) / divisor(mu))
     why = f"A^(-1) R_mu = R_mu A^(-1) = (R_mu + A^(-1))/mu, mu = {mu} (mu != 0)"
     # mu A^{-1} R − R − A^{-1} = A^{-1} [(mu I − A) R − I] + [A^{-1} A − I] R
     system.add_rule((AINV, R), rhs, why, name=f"Ainv{R}",
@@ -1930,14 +1930,17 @@ def solve_multipliers(equations: list[NCPoly], unknowns: list[Letter],
 
 
 def _isolate(eq: NCPoly, U: Letter, unknowns: list[Letter]) -> NCPoly | None:
-    """−rest/c if eq = c·U + rest with c a nonzero scalar and rest free of all unknowns."""
+    """−rest/c if eq = c·U + rest with c a nonzero scalar and rest free of all unknowns.  A coefficient that
+    depends on the sizes (n − r, n − 2r: zero at some sizes, where the equations have no unique solution) is
+    refused (:func:`divisor`): a division the certificate would not show, so the proof would claim sizes where it
+    divided by 0."""
     c = eq.terms.get(((), (U,)))
     if c is None or simplify_coef(c) == 0:
         return None
     rest = NCPoly({k: v for k, v in eq.terms.items() if k != ((), (U,))}, eq.row, eq.col)
     if rest.letters() & set(unknowns):
         return None
-    return rest * (se.Integer(-1) / c)
+    return rest * (se.Integer(-1) / divisor(c))
 
 
 def _operator_letters(y: Any) -> list[OperatorLetter]:

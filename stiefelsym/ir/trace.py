@@ -61,7 +61,8 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
 
     ``returns``: the structure of its value for claim code (None: an engine value; k: a tuple of
     k values; "scene": a scene; ("like", name): the structure of the value of the function argument
-    ``name``, or, when ``name`` is a matrix argument, a matrix of its spaces).  ``like``: for a function
+    ``name``, or, when ``name`` is a matrix argument, a matrix of its spaces; ("mat", spaces): a matrix of
+    those spaces, such as ("r", "r")).  ``like``: for a function
     argument, the argument whose structure its second parameter has (a point of a phase space of the
     caller's).  ``constant``: its value does not move with the point of the scene it is given (a
     coordinate basis vector): its derivative along every flow is 0 (see :mod:`.derivative`).  ``check``: called
@@ -83,19 +84,20 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
     def wrapper(*args, **kw):
         if _ACTIVE:
             bound = None            # the arguments by name, bound once for the check and the shapes
-            if check is not None or like or type(returns) is tuple:
+            shaped = type(returns) is tuple and returns[0] == "like"
+            if check is not None or like or shaped:
                 try:
                     bound = sig.bind(*args, **kw).arguments
                 except TypeError:
-                    if like or type(returns) is tuple:
+                    if like or shaped:
                         raise
                     # no check: the step's own call raises as it does untraced
             if check is not None and bound is not None:
                 check(_ACTIVE[-1], bound)
             shapes = {}
-            if like or type(returns) is tuple:
+            if like or shaped:
                 shapes = {bound[name]: bound[other] for name, other in (like or {}).items() if name in bound}
-                if type(returns) is tuple and returns[1] in bound:
+                if shaped and returns[1] in bound:
                     shapes["__returns__"] = bound[returns[1]]
             return _ACTIVE[-1].prim(qual, args, kw, returns, shapes)
         return f(*args, **kw)
@@ -1615,6 +1617,8 @@ class Trace:
             check(self, ref)
         if returns == "scene":
             return TraceScene(self, ref)
+        if type(returns) is tuple and returns[0] == "mat":     # ("mat", spaces): a matrix of those spaces
+            return Tracer(self, ref, MAT, self.shape_of(returns[1]))
         if type(returns) is tuple:              # ("like", name): shaped like a function argument's value
             f = (shapes or {}).get("__returns__")
             if type(f) is Tracer and f._kind == MAT:   # ... or like a matrix argument: a matrix of its spaces

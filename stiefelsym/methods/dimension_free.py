@@ -254,6 +254,12 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         res.verdict, res.message = "error", f"no certificate: {exc}"
         res.seconds = time.perf_counter() - t0
         return res
+    pole = size_pole(data)
+    if pole:
+        # a rule that divides by a polynomial in the sizes (a resolvent identity with ν − μ = n − r) proves the
+        # claim where that polynomial is not 0 only: not for all n, r (the fixed sizes decide)
+        return undecided(f"the proof divides by {pole}, a polynomial in the sizes that is 0 at some of them; the "
+                         "fixed-size methods decide")
     report = check_certificate(data)
     res.certificate_data = data
     if not report.accepted:
@@ -522,6 +528,18 @@ def probe_divisions(claim: Claim, func: Callable, every_size: bool = False, fami
         why = division_probe(claim, z.n, z.r, func, strict=True)
         if why:
             return why
+    return ""
+
+
+def size_pole(data: dict) -> str:
+    """The first denominator of a coefficient of the certificate ``data`` that may vanish at some sizes n, r, or
+    "" (see :func:`~stiefelsym.certificate_check.may_vanish_at_a_size`)."""
+    from stiefelsym.certificate_check import coefficient, may_vanish_at_a_size
+    for e in data["entries"]:
+        for t in e["residual"] + e["terms"]:
+            den = coefficient(t["coef"]).as_numer_denom()[1]
+            if may_vanish_at_a_size(den):
+                return str(den)
     return ""
 
 

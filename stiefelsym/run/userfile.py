@@ -11,8 +11,9 @@ and the process that does knows nothing of the run.  :func:`load_claims_isolated
    on its standard input the file's path, *no size*, no budget of the run: the first
    phase.  It imports the file (:func:`stiefelsym.claims.load_claims_file`:
    sealed engine, deadline, standard output to standard error) and, for each
-   claim, forks a child that traces that claim alone (no claim's graph can depend
-   on another claim having been traced before it), twice and compared as in
+   claim, job by job, forks a child that does that job alone (its metadata, or one function
+   traced at one key: no graph can depend on another claim, correction or size having been
+   traced before it), twice and compared as in
    :func:`stiefelsym.ir.compile_claim`, with symbolic sizes and, only when that
    trace is refused, at the sizes its size statement lists, and the same for each
    correction (a function with a graph of symbolic sizes is never traced at a
@@ -359,34 +360,27 @@ def _die_with_parent() -> None:
 
 def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, has_free: dict,
                 memory: int | None, wfd: int) -> None:
-    """A grandchild: the claim's jobs from ``start`` on, one JSON line each, written as each is done."""
+    """A grandchild: the claim's job ``start`` (its metadata, or one function traced at one key), one JSON line.
+    Each job has a grandchild of its own, forked from the process that imported the file: what one function
+    traced at one key sees is the file and that key, never another job (a correction traced after the printed
+    claim, a size after another), whatever state claim code keeps in its modules."""
     _die_with_parent()
     _limit_memory(memory)
 
     def write(obj: Any) -> None:
         write_fully(wfd, json.dumps(obj).encode() + b"\n")
+    job = jobs[start]
+    if job[0] == "meta":
+        try:
+            meta = _claim_data(c) if more is None else _claim_more(c, more)
+        except Exception as exc:    # noqa: BLE001 - reported as the file's error
+            write({"failed": f"{type(exc).__name__}: {exc}"})
+            return
+        write({"meta": meta})
+        return
+    _, f, key = job
     funcs = [c.func] + [k.func for k in c.corrections]
-    jobs = list(jobs)
-    i = start
-    while i < len(jobs):
-        job = jobs[i]
-        i += 1
-        if job[0] == "meta":
-            try:
-                meta = _claim_data(c) if more is None else _claim_more(c, more)
-            except Exception as exc:    # noqa: BLE001 - reported as the file's error
-                write({"failed": f"{type(exc).__name__}: {exc}"})
-                return
-            jobs += _trace_jobs(c, meta)
-            write({"meta": meta})
-            continue
-        _, f, key = job
-        if _skipped(job, has_free):
-            continue
-        out = _trace_one(funcs[f], c.realization, key)
-        if key is None:
-            has_free[f] = _traced_at_no_size(out)
-        write({"job": out})
+    write({"job": _trace_one(funcs[f], c.realization, key)})
 
 
 def _traced_at_no_size(out: dict) -> bool:
@@ -430,9 +424,9 @@ def _beat() -> None:
 
 def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) -> dict:
     """In the tracer process: the claim's metadata and its graphs (``more``: the second phase's, see
-    :func:`_claim_more`), each function traced at each key in
-    grandchildren (one at a time; a grandchild that dies or runs out of time is replaced for the jobs after
-    the one it did not finish).  A key whose tracing ran out of time or died is recorded as such."""
+    :func:`_claim_more`), each function traced at each key in a grandchild of its own (one at a time, each
+    forked from this process, so that no job sees what another left in the file's modules).  A key whose
+    tracing ran out of time or died is recorded as such."""
     jobs: list = [("meta",)]
     meta: dict | None = None
     results: list = []
@@ -456,10 +450,10 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
             os.close(wfd)
             gc.unfreeze()
             buf = b""
-            timed_out = False
+            timed_out = done = False
             deadline = time.monotonic() + (META_SECONDS if jobs[i][0] == "meta" else timeout)
             try:
-                while i < len(jobs):
+                while i < len(jobs) and not done:
                     chunk = next_chunk(rfd, deadline)
                     if chunk is None:
                         timed_out = True
@@ -467,7 +461,8 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                     if not chunk:
                         break
                     buf += chunk
-                    while b"\n" in buf and i < len(jobs):
+                    if b"\n" in buf:           # the grandchild's one line: its job is done
+                        done = True
                         line, buf = buf.split(b"\n", 1)
                         _beat()             # (before the line is read: a large graph takes time to parse)
                         item = json.loads(line)
@@ -487,6 +482,8 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                 os.close(rfd)
                 _kill(pid, wait=not timed_out and i >= 0)
         _beat()         # the job that ran out of time or died has ended too
+        if done:
+            continue    # the next job, in a grandchild of its own
         if i >= len(jobs):
             break
         if jobs[i][0] == "meta":
