@@ -344,7 +344,8 @@ def _missing_corrections(records: list[dict], registry: Registry, meta: dict) ->
 
 def selected_claims(meta: dict, registry: Registry) -> list[str]:
     """The claims a results file's command selected: the ids it names (``stiefelsym verify ID ... --option``),
-    else every claim of the registry its claims files give (what ``verify`` runs when it names none)."""
+    else the claims of its claims files (what ``verify --claims FILE`` runs when it names none), else every
+    claim of the registry (the catalog)."""
     import shlex
     try:
         words = shlex.split(str(meta.get("command") or ""))
@@ -356,7 +357,13 @@ def selected_claims(meta: dict, registry: Registry) -> list[str]:
             if w.startswith("-"):
                 break
             ids.append(w)
-    return ids or [c.id for c in registry]
+    if ids:
+        return ids
+    if "--claims" in words:
+        # the claims of the files the command named (the catalog's are not run beside them), whatever else the
+        # registry holds (the catalog, loaded to look up a record's claim that no file defines)
+        return [c.id for c in registry if not c.reviewed] or [c.id for c in registry]
+    return [c.id for c in registry]
 
 
 def _where_run(r: dict) -> str:

@@ -96,3 +96,18 @@ def test_the_magnetic_form_is_a_field_strength():
     recs = _records(S82 / "hidden" / "probes_f.py", "p82f-J-plain", "p82f-two-J", "--method", "free")
     for key, rec in recs.items():
         assert rec["verdict"] == "proved", (key, rec["message"][:300])
+
+
+def test_a_forged_claim_id_is_rejected_alone():
+    """A record whose claim id carries a zero-width space (s81's sweep, forged/claimzw): `check` rejected the 144
+    catalog claims as missing runs of the file's command (which ran the claims file's claims only); now the forged
+    record and the file's claim left without a record."""
+    root = Path(__file__).parents[2]
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "check",
+                          "tests/adversary/s81/classes/forged/claimzw/results.json"],
+                         capture_output=True, text=True, timeout=600, cwd=root)
+    assert out.returncode == 1, out.stderr[-1000:]
+    rejected = [line for line in out.stdout.splitlines() if line.startswith("REJECTED")]
+    assert 1 <= len(rejected) <= 3, rejected
+    assert any("no such claim" in line for line in rejected), rejected
+    assert not any("stiefel-corank-one" in line for line in rejected), rejected
