@@ -164,17 +164,17 @@ def check_certificate(data: Any) -> CheckReport:
 def may_vanish_at_a_size(den: Any) -> bool:
     """Whether the polynomial ``den`` (in the sizes n, r and generic parameters) may be identically 0 in the
     parameters at some size: False when it has no n, r, or when one of its coefficients as a polynomial in the
-    parameters is a polynomial in n, r with positive coefficients (nonzero at every size); else True (n − r)."""
-    sizes, by_params = {se.Symbol("n"), se.Symbol("r")}, {}
+    parameters is a polynomial in n, r whose coefficients have one sign (nonzero at every size); else True."""
+    sizes, groups = {se.Symbol("n"), se.Symbol("r")}, {}
     for mono, c in se.expand(den).as_coefficients_dict().items():
         powers = mono.as_powers_dict().items() if c != 0 and mono != 1 else ()
-        param = se.Mul(*[f ** k for f, k in powers if f not in sizes])
-        by_params[param] = by_params.get(param, 0) + c * se.Mul(*[f ** k for f, k in powers if f in sizes])
-    if not any(getattr(se.sympify(c), "free_symbols", set()) & sizes for c in by_params.values()):
+        if c != 0:
+            groups.setdefault(se.Mul(*[f ** k for f, k in powers if f not in sizes]), []).append(
+                (se.sympify(c), {f for f, _ in powers if f in sizes}))
+    if not any(s for g in groups.values() for _, s in g):
         return False
-    return not any(se.expand(c) != 0 and all(
-        se.sympify(k).is_Number and k > 0 and set(getattr(m, "free_symbols", ())) <= sizes
-        for m, k in se.expand(c).as_coefficients_dict().items() if k != 0) for c in by_params.values())
+    return not any(all(c.is_Number for c, _ in g) and (all(c > 0 for c, _ in g) or all(c < 0 for c, _ in g))
+                   for g in groups.values())
 
 
 def check_cases(data: dict) -> CheckReport:

@@ -96,13 +96,26 @@ Coef = Any  # a symengine expression
 
 
 def divisor(k: Coef) -> Coef:
-    """k, as a divisor: refused (recorded) when it depends on the sizes n, r and is not visibly
-    positive at every size (a polynomial in n, r with positive coefficients): a division by n − 4 or
-    by n − r holds for all n, r as a rational function, but is 0/0 at n = 4 or at r = n, so no
-    statement for every n, r follows from it."""
+    """k, as a divisor: refused (recorded) when it depends on the sizes n, r and may be 0 at some size: a
+    division by n − 4 or by n − r holds for all n, r as a rational function, but is 0/0 at n = 4 or at r = n,
+    so no statement for every n, r follows from it.  Accepted: k free of n, r, or k with a coefficient (as a
+    polynomial in its other symbols) that is a polynomial in n, r whose coefficients all have one sign (n + r,
+    −2n, λ + n): nonzero at every size."""
     syms = getattr(k, "free_symbols", None)
     if not syms or not any(d in syms for d in (DIMENSIONS["n"], DIMENSIONS["r"])):
         return k
+    sizes = {DIMENSIONS["n"], DIMENSIONS["r"]}
+    groups: dict[Any, dict] = {}
+    for mono, c in se.expand(k).as_coefficients_dict().items():
+        if c == 0:                  # (the constant term 0 is listed too)
+            continue
+        powers = mono.as_powers_dict().items() if mono != 1 else ()
+        rest = se.Mul(*[f ** e for f, e in powers if f not in sizes])
+        groups.setdefault(rest, {})[se.Mul(*[f ** e for f, e in powers if f in sizes])] = se.sympify(c)
+    if any(all(c.is_Number for c in g.values()) and (all(c > 0 for c in g.values()) or all(c < 0 for c in g.values()))
+           for g in groups.values()):
+        return k
+    raise refuse(f"a division by {k}, an expression in the sizes that may vanish at some n, r")
     sizes = {DIMENSIONS["n"], DIMENSIONS["r"]}
     for mono, c in se.expand(k).as_coefficients_dict().items():
         c = se.sympify(c)           # (a bare symbol's coefficient comes as a Python int)

@@ -111,3 +111,14 @@ def test_a_forged_claim_id_is_rejected_alone():
     assert 1 <= len(rejected) <= 3, rejected
     assert any("no such claim" in line for line in rejected), rejected
     assert not any("stiefel-corank-one" in line for line in rejected), rejected
+
+
+def test_a_divisor_of_one_sign_in_the_sizes_is_accepted():
+    """The review of the door (s82/review, F2): n + r and −2n are nonzero at every size; the door refused them (the
+    constant term 0 that symengine lists, and a sign), so true claims the engine proved before were undecided."""
+    recs = _records(S82 / "review" / "r_resolvents.py", "--method", "free")
+    for (cid, _v, _n, _r), rec in recs.items():
+        assert (rec["verdict"] == "proved") == (not cid.endswith("-false")), (cid, rec["verdict"], rec["message"][:300])
+    n, r = se.symbols("n r")
+    for den in (-(n + r), -2 * n, n * r + n, 2 * n + r):
+        assert not may_vanish_at_a_size(den), den
