@@ -358,8 +358,7 @@ def _die_with_parent() -> None:
         prctl(1, signal.SIGKILL)                # PR_SET_PDEATHSIG
 
 
-def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, has_free: dict,
-                memory: int | None, wfd: int) -> None:
+def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, memory: int | None, wfd: int) -> None:
     """A grandchild: the claim's job ``start`` (its metadata, or one function traced at one key), one JSON line.
     Each job has a grandchild of its own, forked from the process that imported the file: what one function
     traced at one key sees is the file and that key, never another job (a correction traced after the printed
@@ -441,7 +440,7 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                 os.close(rfd)
                 code = 0
                 try:
-                    _jobs_lines(c, more, jobs, i, has_free, memory, wfd)
+                    _jobs_lines(c, more, jobs, i, memory, wfd)
                 except BaseException:   # noqa: BLE001 - the parent sees where it stopped
                     code = 1
                 finally:
@@ -477,7 +476,6 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                                 has_free[f] = _traced_at_no_size(item["job"])
                             results.append([f, None if key is None else list(key), item["job"]])
                         i = _next_job(jobs, i + 1, has_free)
-                        deadline = time.monotonic() + timeout     # (a trace: only the first job is the metadata)
             finally:
                 os.close(rfd)
                 _kill(pid, wait=not timed_out and i >= 0)
