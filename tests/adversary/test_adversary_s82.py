@@ -122,3 +122,14 @@ def test_a_divisor_of_one_sign_in_the_sizes_is_accepted():
     n, r = se.symbols("n r")
     for den in (-(n + r), -2 * n, n * r + n, 2 * n + r):
         assert not may_vanish_at_a_size(den), den
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float", "free"])
+def test_the_typed_magnetic_form_keeps_its_negative_control(method):
+    """The stop's own attempt (s82/own/magnetic_false.py): with F typed, the flows of F = J and F = 2J must still
+    differ (fails at fixed sizes, never proved by free), and F = J is the default F."""
+    size = [] if method == "free" else ["--size", "3,2"]
+    recs = _records(S82 / "own" / "magnetic_false.py", "--method", method, *size)
+    got = {cid: rec["verdict"] for (cid, _v, _n, _r), rec in recs.items()}
+    assert got["s82own-twice-J-false"] == ("undecided" if method == "free" else "fails"), got
+    assert got["s82own-default-J-true"] in ("proved", "checked", "numeric"), got
