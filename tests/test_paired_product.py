@@ -129,3 +129,70 @@ def test_only_a_product_read_by_the_pairing_alone_is_reassociated():
                         (commutator_negative_first, 1)):
         g = compile_claim(func, 3, 2, (cons.name, cons.build))
         assert len(_paired_products(g, _deps(g))) == fused, func.__name__
+
+
+# -- traces of a sum of products, and products a pairing shares with others (stop 83) ------------------------
+
+def _family(s):
+    """Six matrices of so(n) and two points x, x − A of gl(n), as the Lie-Poisson forms of §6 pair them (from six
+    on, computing [x, z] and [x − A, z] once per z takes fewer products than z w and w z once per pair)."""
+    F, G, M = _gradients(s)
+    S, K = s.Phi - s.Phi.T, M - M.T
+    return [F, G, S, K, comm(F, S), comm(G, K)], M, M - s.A
+
+
+def forms_on_a_family(s):
+    """tr(x [z, w]) − tr((x − A) [z, w]) = tr(A [z, w]) for every pair of a family, the commutators shared by the two
+    traces (fused together: [x, z] and [x − A, z] once per z; [z, z] cancels), against the same traces computed
+    otherwise."""
+    zs, x, y = _family(s)
+    out = {}
+    for i, z in enumerate(zs):
+        for j, w in enumerate(zs):
+            c = comm(z, w)
+            out[f"({i},{j})"] = s.tr(x @ c) - s.tr(y @ c) - s.tr((s.A @ z) @ w) + s.tr((s.A @ w) @ z)
+    return out
+
+
+def forms_on_a_family_swapped(s):
+    """False: tr(x [z, w]) − tr((x − A) [z, w]) = tr(A [w, z])."""
+    zs, x, y = _family(s)
+    return {f"({i},{j})": s.tr(x @ comm(z, w)) - s.tr(y @ comm(z, w)) - s.tr(s.A @ comm(w, z))
+            for i, z in enumerate(zs) for j, w in enumerate(zs) if i != j}
+
+
+def self_commutator(s):
+    """tr(x [z, z]) = 0: the product z z and its negative cancel and are not computed."""
+    zs, x, y = _family(s)
+    return {"tr(x [z, z])": [s.tr(x @ comm(z, z)) for z in zs], "tr(z [y, y])": s.tr(zs[0] @ comm(y, y))}
+
+
+def self_commutator_of_a_pole(s):
+    """tr(x [z, z]) with z = (0 · M)⁻¹: a factor of a cancelled product is still computed, and it has no value."""
+    _, x, _ = _family(s)
+    z = (s.generic("M", "n", "n") * 0).inv()
+    return {"tr(x [z, z])": s.tr(x @ comm(z, z))}
+
+
+@pytest.mark.parametrize("n,r", [(3, 1), (4, 2)])
+def test_traces_sharing_a_commutator_are_fused_and_equal(n, r):
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS["standard"]
+    g = compile_claim(forms_on_a_family, n, r, (cons.name, cons.build))
+    fused = _paired_products(g, _deps(g))
+    assert sum(1 for v in fused.values() if v[3] == "tr") >= 72     # tr(x[z,w]) and tr((x−A)[z,w]), 36 pairs
+    assert run_exact(_claim(forms_on_a_family), n, r, 0).verdict == "proved"
+    assert run_exact(_claim(self_commutator), n, r, 0).verdict == "proved"
+
+
+def test_a_corrupted_trace_of_a_commutator_is_refuted():
+    c = _claim(forms_on_a_family_swapped, "paired-trace-false")
+    assert run_exact(c, 3, 2, 0).verdict == "fails"
+    assert run_points(c, 3, 2, "modular", 0).verdict == "fails"
+
+
+def test_a_cancelled_product_still_computes_its_factors():
+    """The commutator [z, z] is 0 without its products, but z itself must exist: the pole is met."""
+    res = run_exact(_claim(self_commutator_of_a_pole, "paired-pole"), 3, 1, 0)
+    assert res.verdict != "proved", res

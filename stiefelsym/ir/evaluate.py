@@ -552,9 +552,10 @@ def _program(g: Graph, deps: list, fused: bool = False) -> list:
     if fused:
         for i, (s, x, y) in _trace_products(g, deps).items():
             skip[i], kernels[i] = (s, x, y), _trace_product_kernel(s, x, y)
-        for i, (s, x, terms) in _paired_products(g, deps).items():
-            skip[i] = (s, x) + tuple(j for _, a, b in terms for j in (a, b))
-            kernels[i] = _paired_product_kernel(s, x, terms)
+        for i, (s, x, terms, kind, whole) in _paired_products(g, deps).items():
+            # (the factors of cancelled products too: a value that cannot be computed is an error still)
+            skip[i] = (s, x) + tuple(j for _, a, b in whole for j in (a, b))
+            kernels[i] = _paired_product_kernel(s, x, terms, kind)
     need = set()
     stack = [g.output.i]
     while stack:
@@ -607,62 +608,152 @@ def _trace_product_kernel(s: int, x: int, y: int) -> Callable:
     return lambda m, ev: m[s].tr_product(m[x], m[y])
 
 
-def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple[tuple[int, int, int], ...]]]:
-    """{i: (scene, x, ((sign, a, b), ...))} for every top-level node i = <x, y> (the scene's ``killing``,
-    -1/2 tr(x y), symmetric in its arguments) where y is a product a @ b, or a sum of (at most
-    MAX_PAIRED_TERMS) products and their negatives, commutators among them, that i alone reads, as do its
-    sums and products: then <x, a b> = <x a, b>, and the product x a is computed instead of a b; for a
-    commutator, <x, [a, b]> = <[x, a], b>.  A Lie-Poisson bracket -<ξ, [∇f, ∇g]> of many pairs of
-    functions so computes [ξ, ∇f] once per function (once per evaluation: kept with the node values) and
-    one pairing, of n² products, per pair, instead of two n x n products per pair."""
+def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple, str, tuple]]:
+    """{i: (scene, x, ((sign, a, b), ...), kind, whole)} for top-level nodes i = <x, y> (kind "killing": the scene's
+    pairing -1/2 tr(x y), symmetric in its arguments) or i = tr(x @ y) (kind "tr"; or tr(y @ x)) where y is a
+    product a @ b, or a sum of (at most MAX_PAIRED_TERMS) products and their negatives, commutators among them:
+    then <x, a b> = <x a, b>, and the product x a is computed instead of a b; for a commutator,
+    <x, [a, b]> = <[x, a], b>; a product with its own negative in the sum (the commutator [a, a]) cancels and
+    is not computed.  A Lie-Poisson bracket -<ξ, [∇f, ∇g]> of many pairs of functions so computes [ξ, ∇f] once
+    per function (once per evaluation: kept with the node values) and one pairing, of n² products, per pair,
+    instead of two n x n products per pair.
+
+    The nodes of y (its sums and products) are then not computed at all, so a pairing is reassociated only when
+    every node that reads a node of its y is reassociated too (or is the product x @ y a trace alone reads).
+    Pairings that share nodes of y (tr(x[z, w]) and tr((x − A)[z, w]): one commutator, two traces) are decided
+    together, by the products each way: the products of their y's, against the products x a they need, each
+    counted as a share of the pairings that need it (x a for every a of a family, [x, a] with every b of it)."""
     ops, args = g.ops, g.args
-    readers = _readers(g)
     top = g.output.i if g.output is not None else -1
+    readers: dict[int, list] = {}
+    for k in range(len(ops)):
+        for j in g.refs(k):
+            readers.setdefault(j, []).append(k)
 
-    def alone(j: int) -> bool:
-        return not deps[j] and j != top and readers.get(j) == 1
-
-    def product(j: int) -> tuple[int, int] | None:
-        if ops[j] != "matmul" or not alone(j):
-            return None
-        a, b = args[j]
-        return (a.i, b.i) if type(a) is Ref and type(b) is Ref else None
-
-    def flat(j: int, sign: int, out: list) -> bool:
-        """The signed products of the sum j (each node of it read by its parent alone), added to out."""
-        if not alone(j) or len(out) >= MAX_PAIRED_TERMS:
+    def flat(j: int, sign: int, out: list, inner: list) -> bool:
+        """The signed products of the sum j, added to out (its nodes to inner)."""
+        if deps[j] or j == top or len(out) >= MAX_PAIRED_TERMS:
             return False
-        p = product(j)
-        if p is not None:
-            out.append((sign, *p))
+        a = args[j]
+        if ops[j] == "matmul":
+            if type(a[0]) is not Ref or type(a[1]) is not Ref:
+                return False
+            out.append((sign, a[0].i, a[1].i))
+            inner.append(j)
             return True
-        if ops[j] in ("add", "sub") and all(type(v) is Ref for v in args[j]):
-            u, v = args[j]
-            return flat(u.i, sign, out) and flat(v.i, sign if ops[j] == "add" else -sign, out)
-        if ops[j] == "neg" and type(args[j][0]) is Ref:
-            return flat(args[j][0].i, -sign, out)
+        if ops[j] in ("add", "sub") and all(type(v) is Ref for v in a):
+            inner.append(j)
+            return flat(a[0].i, sign, out, inner) and flat(a[1].i, sign if ops[j] == "add" else -sign, out, inner)
+        if ops[j] == "neg" and type(a[0]) is Ref:
+            inner.append(j)
+            return flat(a[0].i, -sign, out, inner)
         return False
 
-    def terms(y: int) -> tuple[tuple[int, int, int], ...] | None:
+    def terms_of(y: int) -> tuple[tuple, list] | None:
         out: list = []
-        return tuple(out) if flat(y, 1, out) else None
+        inner: list = []
+        return (tuple(out), inner) if flat(y, 1, out, inner) else None
 
-    out = {}
+    cands: dict[int, tuple] = {}      # i -> (scene, x, terms, kind, inner nodes, own nodes)
     for i, op in enumerate(ops):
         if op != "call" or deps[i]:
             continue
         a = args[i]
-        if a[1] != "killing" or a[3] or len(a[2]) != 2 or type(a[0]) is not Ref:
+        if a[3] or type(a[0]) is not Ref:
             continue
-        u, v = a[2]
-        if type(u) is not Ref or type(v) is not Ref or u.i == v.i:
+        if a[1] == "killing" and len(a[2]) == 2:
+            u, v = a[2]
+            if type(u) is not Ref or type(v) is not Ref or u.i == v.i:
+                continue
+            pairs, own, kind = ((u.i, v.i), (v.i, u.i)), (i,), "killing"
+        elif a[1] == "tr" and len(a[2]) == 1 and type(a[2][0]) is Ref:
+            j = a[2][0].i
+            if ops[j] != "matmul" or deps[j] or j == top or len(readers.get(j, ())) != 1:
+                continue
+            u, v = args[j]
+            if type(u) is not Ref or type(v) is not Ref:
+                continue
+            pairs, own, kind = ((u.i, v.i), (v.i, u.i)), (i, j), "tr"
+        else:
             continue
-        for x, y in ((u.i, v.i), (v.i, u.i)):
-            t = terms(y)
-            if t is not None:
-                out[i] = (a[0].i, x, t)
+        for x, y in pairs:
+            found = terms_of(y)
+            if found is not None and x not in found[1]:
+                cands[i] = (a[0].i, x, _cancelled(found[0]), kind, found[1], own, found[0])
                 break
+    # a pairing whose y has a node another node reads (not a pairing taken here) cannot skip that node
+    while True:
+        allowed = {k for c in cands.values() for k in (*c[4], *c[5])}
+        drop = [i for i, c in cands.items() if any(k not in allowed for j in c[4] for k in readers.get(j, ()))]
+        if not drop:
+            break
+        for i in drop:
+            del cands[i]
+    # clusters of pairings sharing a node of y; each reassociated or not as a whole
+    owner: dict[int, int] = {}
+    parent = {i: i for i in cands}
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+    for i, c in cands.items():
+        for j in c[4]:
+            k = owner.setdefault(j, i)
+            if k != i:
+                parent[find(k)] = find(i)
+    uses: dict[tuple, int] = {}
+    for c in cands.values():
+        for key in _needed_products(c[1], c[2]):
+            uses[key] = uses.get(key, 0) + 1
+    clusters: dict[int, list] = {}
+    for i in cands:
+        clusters.setdefault(find(i), []).append(i)
+    out = {}
+    for members in clusters.values():
+        inner = {j for i in members for j in cands[i][4] if ops[j] == "matmul"}
+        cost = sum((2 if key[0] == "[]" else 1) / uses[key] for i in members
+                   for key in _needed_products(cands[i][1], cands[i][2]))
+        if cost < len(inner) or (cost == len(inner) and all(cands[i][3] == "killing" for i in members)):
+            for i in members:
+                s, x, terms, kind, _inner, _own, whole = cands[i]
+                out[i] = (s, x, terms, kind, whole)
     return out
+
+
+def _cancelled(terms: tuple) -> tuple:
+    """The signed products left when a product and its negative cancel (b a − b a, [a, a])."""
+    left = list(terms)
+    out = []
+    while left:
+        t = left.pop(0)
+        neg = (-t[0], t[1], t[2])
+        if neg in left:
+            left.remove(neg)
+        else:
+            out.append(t)
+    return tuple(out)
+
+
+def _parts(terms: tuple) -> list[tuple[str, int, int, int]]:
+    """The pairing's parts: ("[]", sign, a, b) for a product a b whose sum also holds −b a (a commutator), else
+    ("@", sign, a, b)."""
+    parts: list[tuple[str, int, int, int]] = []
+    left = list(terms)
+    while left:
+        sign, a, b = left.pop(0)
+        if (-sign, b, a) in left and a != b:
+            left.remove((-sign, b, a))
+            parts.append(("[]", sign, a, b))
+        else:
+            parts.append(("@", sign, a, b))
+    return parts
+
+
+def _needed_products(x: int, terms: tuple) -> list[tuple[str, int, int]]:
+    """The products x a (or commutators [x, a]) a reassociated pairing computes, as keys of :func:`_once`."""
+    return [(kind, x, a) for kind, _sign, a, _b in _parts(terms)]
 
 
 def _once(m: dict, key: tuple, compute: Callable[[], Any], scene: Any) -> Any:
@@ -702,31 +793,24 @@ def _recorded(tracker: CoordinateTracker | None, compute: Callable[[], Any]) -> 
 MAX_PAIRED_TERMS = 16
 
 
-def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ...]) -> Callable:
-    """The kernel of a pairing of x with a sum of signed products (see :func:`_paired_products`): a product
-    a b whose sum also holds −b a is a commutator, paired as <[x, a], b>; any other as <x a, b>.  [x, a] and
-    x a are computed once per evaluation."""
-    parts: list[tuple[str, int, int, int]] = []
-    left = list(terms)
-    while left:
-        sign, a, b = left.pop(0)
-        if (-sign, b, a) in left and a != b:
-            left.remove((-sign, b, a))
-            parts.append(("[]", sign, a, b))
-        else:
-            parts.append(("@", sign, a, b))
+def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ...], kind: str = "killing") -> Callable:
+    """The kernel of a pairing (kind "killing") or a trace of a product (kind "tr") of x with a sum of signed
+    products (see :func:`_paired_products`): a product a b whose sum also holds −b a is a commutator, paired as
+    <[x, a], b>; any other as <x a, b>.  [x, a] and x a are computed once per evaluation."""
+    parts = _parts(terms)
 
     def run(m: dict, ev: "Evaluator") -> Any:
         scene = m[s]
+        pair = scene.killing if kind == "killing" else scene.tr_product
         acc = None
-        for kind, sign, a, b in parts:
-            if kind == "[]":
+        for how, sign, a, b in parts:
+            if how == "[]":
                 xa = _once(m, ("[]", x, a), lambda: m[x] @ m[a] - m[a] @ m[x], scene)
             else:
                 xa = _once(m, ("@", x, a), lambda: m[x] @ m[a], scene)
-            v = scene.killing(xa, m[b])
+            v = pair(xa, m[b])
             acc = (v if sign > 0 else -v) if acc is None else (acc + v if sign > 0 else acc - v)
-        return acc
+        return scene.q(0) if acc is None else acc
     return run
 
 
