@@ -20,6 +20,9 @@ SKEW = {
     "explicit": lambda s: s.mat([[0, s.lam], [-s.lam, 0]], ("r", "r")),
     "explicit constants": lambda s: s.mat([[0, 2], [-2, 0]], ("r", "r")),
     "zero": lambda s: s.zeros(2, 2, ("r", "r")),
+    "skew times an entry of a product": lambda s: s.eta * (s.X.T @ s.X)[0, 1],
+    "an entry of eta times an explicit skew matrix": lambda s: s.eta[0, 1] * s.mat([[0, 1], [-1, 0]], ("r", "r")),
+    "skew times entries of X and of a generic matrix": lambda s: s.eta * s.X[2, 1] - s.generic("G", "r", "r")[1, 0] * s.eta,
 }
 NOT_SKEW = {
     "generic general": lambda s: s.generic("G", "r", "r"),
@@ -31,8 +34,9 @@ NOT_SKEW = {
     "explicit symmetric": lambda s: s.mat([[0, s.lam], [s.lam, 0]], ("r", "r")),
     "explicit nonzero diagonal": lambda s: s.mat([[1, 2], [-2, 0]], ("r", "r")),
     "skew plus sym": lambda s: s.eta + s.generic("S", "r", "r", "sym"),
-    "skew times a matrix entry": lambda s: s.eta * (s.X.T @ s.X)[0, 1],
     "skew times a derivative": lambda s: s.eta * s.d(lambda t: t.tr(t.X.T @ t.P), {"X": s.P}),
+    "skew times a block of a matrix": lambda s: s.eta @ s.X[0:2, 0:2],
+    "an entry times a general matrix": lambda s: s.eta[0, 1] * s.generic("G", "r", "r"),
 }
 
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from stiefelsym.ir.graph import Graph, Ref, Size
+from stiefelsym.ir.trace import MATRICES
 
 _N, _R = "n", "r"
 
@@ -651,7 +652,8 @@ def skew_by_construction(g: Graph, x) -> bool:
     (``s.generic(name, m, m, "skew")``), a skew leaf of the scene (:data:`_SKEW_LEAVES`), a zero matrix, the
     magnetic form's F, M − Mᵀ, an explicit matrix with zeros on its diagonal and opposite entries (equal
     constants, or an entry and its negation) across it, and sums, differences, negations, transposes and
-    multiples by numbers of these.  Decided from the graph, the same for every method and at every size; a
+    multiples of these by numbers (the scene's numbers, traces, pairings, and entries of matrices by
+    construction: F = η₀₁·J).  Decided from the graph, the same for every method and at every size; a
     skew matrix built otherwise (a product gAgᵀ of a skew A, or entries equal only as functions) is not
     recognised (False), so an engine step that needs a skew matrix refuses it with one message everywhere."""
     memo: dict[int, bool] = {}
@@ -713,11 +715,26 @@ def skew_by_construction(g: Graph, x) -> bool:
             return type(b) is Ref and g.ops[b[0]] == "attr" and g.args[b[0]][1] == "a"
         if op == "call":
             return args[1] in ("tr", "scalar", "q", "killing")
+        if op == "entry":                            # M[i, j] at int indices of a matrix by construction
+            m = args[0]
+            return type(args[1]) is int and type(args[2]) is int and type(m) is Ref and _matrix(m)
         if op in ("neg",):
             return _scalar(args[0])
         if op in ("add", "sub", "mul", "div"):
             return _scalar(args[0]) and _scalar(args[1])
         return False
+
+    def _matrix(a: Ref) -> bool:
+        """Whether node a is a matrix by its construction: a matrix of the scene, a product of two (@ takes
+        matrices only), a generic, zero, identity or explicit matrix, or a skew one by construction."""
+        op, args = g.ops[a[0]], g.args[a[0]]
+        if op == "attr":
+            return args[1] in MATRICES
+        if op == "matmul":
+            return True
+        if op == "call":
+            return args[1] in ("generic", "zeros", "identity", "mat")
+        return skew(a)
 
     def _negation(a, b) -> bool:
         if type(a) in (int, Fraction) and type(b) in (int, Fraction):
