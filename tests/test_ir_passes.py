@@ -12,6 +12,7 @@ STANDARD = REALIZATIONS["standard"]
 SKEW = {
     "generic skew": lambda s: s.generic("K", "r", "r", "skew"),
     "eta": lambda s: s.eta,
+    "theta": lambda s: s.theta,
     "Psi": lambda s: s.Psi,
     "M - M^T": lambda s: s.X.T @ s.A @ s.P - (s.X.T @ s.A @ s.P).T,
     "M^T - M": lambda s: (s.X.T @ s.P).T - s.X.T @ s.P,

@@ -215,7 +215,10 @@ class BallField(Field):
             Y = A.solve(Bm)
         except ZeroDivisionError as exc:
             raise DegenerateError("a linear system whose balls contain a singular matrix") from exc
-        return [[BallNum(Y[i, j], _upper(abs(Y[i, j]))) for j in range(k)] for i in range(m)]
+        # each entry's term scale: the largest entry of its column (see FloatField.solve: an entry's own
+        # size is no scale for an entry that is 0)
+        tops = [max((_upper(abs(Y[i, j])) for i in range(m)), default=0.0) for j in range(k)]
+        return [[BallNum(Y[i, j], tops[j]) for j in range(k)] for i in range(m)]
 
 
 def _ball(field: BallField, x: Any) -> Any:

@@ -11,7 +11,7 @@ import itertools
 import math
 import random
 from fractions import Fraction
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 
@@ -438,6 +438,19 @@ class ErrNum:
         return f"{float(self.v):.3e}±{float(self.e):.1e}"
 
 
+def _column_scaled(out: list[list[Any]], size: Callable[[Any], Any], scaled: Callable[[Any, Any], Any],
+                   kind: type) -> list[list[Any]]:
+    """The solution ``out`` of a linear system (rows of entries) with every entry of type ``kind`` given the
+    largest ``size`` of the entries of its column as its term scale (``scaled(x, m)``)."""
+    if not out:
+        return out
+    tops = []
+    for j in range(len(out[0])):
+        sizes = [size(row[j]) for row in out if type(row[j]) is kind]
+        tops.append(max(sizes) if sizes else None)
+    return [[scaled(x, tops[j]) if type(x) is kind else x for j, x in enumerate(row)] for row in out]
+
+
 class FloatField(Field):
     """float64 (or mpmath at ``dps`` digits) with running error bounds."""
 
@@ -502,13 +515,15 @@ class FloatField(Field):
         return x.v == 0 and x.e == 0 if isinstance(x, ErrNum) else x == 0
 
     def solve(self, M, B):
-        """Gaussian elimination with the running error bounds; each solution entry then takes its
-        own size |v| + e as its term scale (as the float64 inverse does): the scales carried
-        through elimination multiply by pivot ratios at every step and would grow without
-        meaning (10^2699 at n = 16), which would make the resolution test e <= 10^-8 m vacuous."""
-        out = Field.solve(self, M, B)
-        return [[ErrNum(x.v, x.e, abs(x.v) + x.e, x.u) if isinstance(x, ErrNum) else x for x in row]
-                for row in out]
+        """Gaussian elimination with the running error bounds; each solution entry then takes as its
+        term scale the size |v| + e of the largest entry of its column of the solution: the scales
+        carried through elimination multiply by pivot ratios at every step and would grow without
+        meaning (10^2699 at n = 16), which would make the resolution test e <= 10^-8 m vacuous; and an
+        entry's own size is no scale for an entry that is 0 (a multiplier Π = 0 beside Λ: its bound,
+        of the size of the rounding of the terms that cancel in it, is then never below 10^-8 of
+        itself, at any precision)."""
+        return _column_scaled(Field.solve(self, M, B), lambda x: abs(x.v) + x.e,
+                              lambda x, m: ErrNum(x.v, x.e, m, x.u), ErrNum)
 
     def absorb(self, a, g, b):
         """a - g b for g = 0 within its bound: |g b| <= (|g.v| + g.e)(|b.v| + b.e) joins a's error."""

@@ -640,7 +640,7 @@ def r_dependence(g: Graph) -> str:
 
 #: the scene's matrices that are skew at every point: the generic elements ξ, ζ of so(n) and η of so(r), and
 #: the momentum maps Φ = PXᵀ − XPᵀ, Ψ (a difference of a matrix and its transpose, on and off T*V)
-_SKEW_LEAVES = frozenset({"eta", "xi", "zeta", "Phi", "Psi"})
+_SKEW_LEAVES = frozenset({"eta", "theta", "xi", "zeta", "Phi", "Psi"})
 #: the scene's numbers (stiefelsym.ir.trace.NUMBERS)
 _SCALAR_LEAVES = frozenset({"lam", "eps", "kappa"})
 #: engine steps whose value is skew: the magnetic form's F = E₁∧E₂
