@@ -552,10 +552,10 @@ def _program(g: Graph, deps: list, fused: bool = False) -> list:
     if fused:
         for i, (s, x, y) in _trace_products(g, deps).items():
             skip[i], kernels[i] = (s, x, y), _trace_product_kernel(s, x, y)
-        for i, (s, x, terms, kind, whole) in _paired_products(g, deps).items():
+        for i, (s, x, terms, kind, whole, tree) in _paired_products(g, deps).items():
             # (the factors of cancelled products too: a value that cannot be computed is an error still)
             skip[i] = (s, x) + tuple(j for _, a, b in whole for j in (a, b))
-            kernels[i] = _paired_product_kernel(s, x, terms, kind)
+            kernels[i] = _paired_product_kernel(s, x, terms, kind, tree)
     need = set()
     stack = [g.output.i]
     while stack:
@@ -608,8 +608,8 @@ def _trace_product_kernel(s: int, x: int, y: int) -> Callable:
     return lambda m, ev: m[s].tr_product(m[x], m[y])
 
 
-def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple, str, tuple]]:
-    """{i: (scene, x, ((sign, a, b), ...), kind, whole)} for top-level nodes i = <x, y> (kind "killing": the scene's
+def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple, str, tuple, tuple]]:
+    """{i: (scene, x, ((sign, a, b), ...), kind, whole, tree)} for top-level nodes i = <x, y> (kind "killing": the scene's
     pairing -1/2 tr(x y), symmetric in its arguments) or i = tr(x @ y) (kind "tr"; or tr(y @ x)) where y is a
     product a @ b, or a sum of (at most MAX_PAIRED_TERMS) products and their negatives, commutators among them:
     then <x, a b> = <x a, b>, and the product x a is computed instead of a b; for a commutator,
@@ -621,8 +621,10 @@ def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple, s
     The nodes of y (its sums and products) are then not computed at all, so a pairing is reassociated only when
     every node that reads a node of its y is reassociated too (or is the product x @ y a trace alone reads).
     Pairings that share nodes of y (tr(x[z, w]) and tr((x − A)[z, w]): one commutator, two traces) are decided
-    together, by the products each way: the products of their y's, against the products x a they need, each
-    counted as a share of the pairings that need it (x a for every a of a family, [x, a] with every b of it)."""
+    together: a pairing alone with its y is reassociated (stop 55), and traces and pairings are when every
+    product of their y's cancels ([z, z] = z z − z z).  The checks of the nodes of y (sizes and spaces of its
+    products and sums, and of the trace or pairing itself) are made on zero matrices of the same shapes and
+    spaces (``tree``), so that an ill-typed y is refused as the unfused evaluation refuses it."""
     ops, args = g.ops, g.args
     top = g.output.i if g.output is not None else -1
     readers: dict[int, list] = {}
@@ -665,7 +667,7 @@ def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple, s
             u, v = a[2]
             if type(u) is not Ref or type(v) is not Ref or u.i == v.i:
                 continue
-            pairs, own, kind = ((u.i, v.i), (v.i, u.i)), (i,), "killing"
+            pairs, own, kind, last = ((u.i, v.i), (v.i, u.i)), (i,), "killing", ("killing", u.i, v.i)
         elif a[1] == "tr" and len(a[2]) == 1 and type(a[2][0]) is Ref:
             j = a[2][0].i
             if ops[j] != "matmul" or deps[j] or j == top or len(readers.get(j, ())) != 1:
@@ -673,13 +675,15 @@ def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple, s
             u, v = args[j]
             if type(u) is not Ref or type(v) is not Ref:
                 continue
-            pairs, own, kind = ((u.i, v.i), (v.i, u.i)), (i, j), "tr"
+            pairs, own, kind, last = ((u.i, v.i), (v.i, u.i)), (i, j), "tr", ("tr", j)
         else:
             continue
         for x, y in pairs:
             found = terms_of(y)
             if found is not None and x not in found[1]:
-                cands[i] = (a[0].i, x, _cancelled(found[0]), kind, found[1], own, found[0])
+                nodes = sorted(set(found[1]) | set(own[1:]))
+                tree = tuple((k, ops[k], tuple(r.i for r in args[k])) for k in nodes) + (last,)
+                cands[i] = (a[0].i, x, _cancelled(found[0]), kind, found[1], own, found[0], tree)
                 break
     # a pairing whose y has a node another node reads (not a pairing taken here) cannot skip that node
     while True:
@@ -703,22 +707,19 @@ def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple, s
             k = owner.setdefault(j, i)
             if k != i:
                 parent[find(k)] = find(i)
-    uses: dict[tuple, int] = {}
-    for c in cands.values():
-        for key in _needed_products(c[1], c[2]):
-            uses[key] = uses.get(key, 0) + 1
     clusters: dict[int, list] = {}
     for i in cands:
         clusters.setdefault(find(i), []).append(i)
     out = {}
     for members in clusters.values():
-        inner = {j for i in members for j in cands[i][4] if ops[j] == "matmul"}
-        cost = sum((2 if key[0] == "[]" else 1) / uses[key] for i in members
-                   for key in _needed_products(cands[i][1], cands[i][2]))
-        if cost < len(inner) or (cost == len(inner) and all(cands[i][3] == "killing" for i in members)):
+        # a pairing whose y no other node reads (stop 55), or traces and pairings whose products all cancel
+        # (then nothing is multiplied at all).  Traces sharing a commutator are not reassociated otherwise:
+        # fewer products are not less work where the x a have larger entries than the a b (review of stop 83:
+        # a family of k matrices built from the point, 17.5 s -> 109 s at k = 10)
+        if (len(members) == 1 and cands[members[0]][3] == "killing") or all(not cands[i][2] for i in members):
             for i in members:
-                s, x, terms, kind, _inner, _own, whole = cands[i]
-                out[i] = (s, x, terms, kind, whole)
+                s, x, terms, kind, _inner, _own, whole, tree = cands[i]
+                out[i] = (s, x, terms, kind, whole, tree)
     return out
 
 
@@ -749,11 +750,6 @@ def _parts(terms: tuple) -> list[tuple[str, int, int, int]]:
         else:
             parts.append(("@", sign, a, b))
     return parts
-
-
-def _needed_products(x: int, terms: tuple) -> list[tuple[str, int, int]]:
-    """The products x a (or commutators [x, a]) a reassociated pairing computes, as keys of :func:`_once`."""
-    return [(kind, x, a) for kind, _sign, a, _b in _parts(terms)]
 
 
 def _once(m: dict, key: tuple, compute: Callable[[], Any], scene: Any) -> Any:
@@ -793,14 +789,20 @@ def _recorded(tracker: CoordinateTracker | None, compute: Callable[[], Any]) -> 
 MAX_PAIRED_TERMS = 16
 
 
-def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ...], kind: str = "killing") -> Callable:
+def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ...], kind: str = "killing",
+                           tree: tuple = ()) -> Callable:
     """The kernel of a pairing (kind "killing") or a trace of a product (kind "tr") of x with a sum of signed
     products (see :func:`_paired_products`): a product a b whose sum also holds −b a is a commutator, paired as
-    <[x, a], b>; any other as <x a, b>.  [x, a] and x a are computed once per evaluation."""
+    <[x, a], b>; any other as <x a, b>.  [x, a] and x a are computed once per evaluation.  First the nodes not
+    computed (``tree``: (node, op, operands) in order, then the trace or pairing) are checked on zero matrices of
+    their operands' shapes and spaces: the refusals of an ill-typed sum or product are the unfused ones."""
     parts = _parts(terms)
+    nodes, last = (list(tree[:-1]), tree[-1]) if tree else ([], None)
 
     def run(m: dict, ev: "Evaluator") -> Any:
         scene = m[s]
+        if last is not None:
+            _typed_on_zeros(m, scene, nodes, last)
         pair = scene.killing if kind == "killing" else scene.tr_product
         acc = None
         for how, sign, a, b in parts:
@@ -812,6 +814,34 @@ def _paired_product_kernel(s: int, x: int, terms: tuple[tuple[int, int, int], ..
             acc = (v if sign > 0 else -v) if acc is None else (acc + v if sign > 0 else acc - v)
         return scene.q(0) if acc is None else acc
     return run
+
+
+def _zeros_like(v: Any) -> Any:
+    """A zero matrix of the shape, spaces and coordinate record of the matrix v (v itself if it is not a Mat)."""
+    if type(v) is not Mat:
+        return v
+    m, k = v._shape()
+    z = Mat.zeros(m, k, v._field, v._tags, v._tracker)
+    z._coords = v._coords
+    return z
+
+
+def _typed_on_zeros(m: dict, scene: Any, nodes: list, last: tuple) -> None:
+    """The operations of ``nodes`` ((node, op, operands), in order) and the trace or pairing ``last``, on zero
+    matrices of the shapes and spaces of their operands' values in m: their checks, not their products."""
+    z: dict = {}
+
+    def get(j: int) -> Any:
+        v = z.get(j)
+        if v is None:
+            v = z[j] = _zeros_like(m[j])
+        return v
+    for j, op, refs in nodes:
+        z[j] = -get(refs[0]) if op == "neg" else _ARITH[op](get(refs[0]), get(refs[1]))
+    if last[0] == "tr":
+        scene.tr(get(last[1]))
+    else:
+        scene.killing(get(last[1]), get(last[2]))
 
 
 def _fuses(scene: Any) -> bool:

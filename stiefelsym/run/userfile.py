@@ -65,7 +65,8 @@ from typing import Any, Callable, Iterable, Sequence
 from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, GIB, write_fully
 from stiefelsym.run.confine import ProcessesLeft
 from stiefelsym.run.isolate import next_chunk
-from stiefelsym.claims import CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec, load_claims_file
+from stiefelsym.claims import (IMPORT_SECONDS, CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec,
+                               load_claims_file)
 from stiefelsym.ir import GraphUnavailable
 
 #: sizes n <= this get an entry in the admits table (the free method checks a declared r up to here)
@@ -93,6 +94,11 @@ IMPORT_START_SECONDS = 30.0
 #: tracing of a function at a size has ended (:data:`stiefelsym.run.sandbox.BEAT`) and no answer come: each has
 #: CLAIM_SECONDS in the tracing process, whose own deadline a thread of the file holding the lock in C would stop
 BEAT_GRACE_SECONDS = 30.0
+#: seconds a job's own import of the file may take (every job of a file imports it in a child of its own:
+#: :func:`_jobs_lines`), its deadline and the grace past it
+IMPORT_BUDGET = IMPORT_SECONDS + IMPORT_GRACE_SECONDS
+#: what a job's child writes when its import of the file has ended (before its one JSON line)
+IMPORTED_MARK = b"."
 #: the exit status of a process whose import of the file (or exit handlers) outlived its watch (_watched)
 IMPORT_EXIT = 7
 #: seconds the file's exit handlers (atexit) may run
@@ -358,16 +364,32 @@ def _die_with_parent() -> None:
         prctl(1, signal.SIGKILL)                # PR_SET_PDEATHSIG
 
 
-def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, memory: int | None, wfd: int) -> None:
-    """A grandchild: the claim's job ``start`` (its metadata, or one function traced at one key), one JSON line.
-    Each job has a grandchild of its own, forked from the process that imported the file: what one function
-    traced at one key sees is the file and that key, never another job (a correction traced after the printed
-    claim, a size after another), whatever state claim code keeps in its modules."""
+def _jobs_lines(path: str, ids: list, cid: str, more: dict | None, jobs: list, start: int, memory: int | None,
+                wfd: int) -> None:
+    """A child: the job ``start`` of claim ``cid`` (its metadata, or one function traced at one key), one JSON
+    line.  Each job has a child of its own, forked from a process that never imported the file, and imports the
+    file itself: what one function traced at one key sees is the file and that key, never another job (a
+    correction traced after the printed claim, a size after another), whatever state claim code keeps in its
+    modules, in hooks the import registered (``os.register_at_fork``) or in memory, pipes or descriptors it made
+    (stop 83's sweep: an import shared by the jobs let an at-fork hook count them, and an anonymous shared
+    mapping carry a flag from one job to the next).  An import that does not register the same claims in the
+    same order as the first (a file whose import is not deterministic) gives no job."""
     _die_with_parent()
     _limit_memory(memory)
 
     def write(obj: Any) -> None:
         write_fully(wfd, json.dumps(obj).encode() + b"\n")
+    try:
+        reg = _import_bounded(path)
+    except Exception as exc:    # noqa: BLE001 - reported as the file's error
+        write({"failed": f"importing the file again for one job: {type(exc).__name__}: {exc}"})
+        return
+    if [k.id for k in reg] != ids:
+        write({"failed": "importing the file again for one job registered other claims (its import is not "
+                         "deterministic): no graph of it is taken"})
+        return
+    write_fully(wfd, IMPORTED_MARK + b"\n")     # the job's own budget starts now
+    c = reg.get(cid)
     job = jobs[start]
     if job[0] == "meta":
         try:
@@ -375,11 +397,22 @@ def _jobs_lines(c: Claim, more: dict | None, jobs: list, start: int, memory: int
         except Exception as exc:    # noqa: BLE001 - reported as the file's error
             write({"failed": f"{type(exc).__name__}: {exc}"})
             return
-        write({"meta": meta})
+        write({"meta": meta, "shape": {"realization": c.realization, "corrections": len(c.corrections)}})
         return
     _, f, key = job
     funcs = [c.func] + [k.func for k in c.corrections]
     write({"job": _trace_one(funcs[f], c.realization, key)})
+
+
+def _job_line(line: bytes, key: str) -> dict | None:
+    """The job's answer in a line of its pipe: a JSON object with ``key`` or "failed"; None for any other line
+    (what the file's code wrote on the descriptors it reaches while it was imported: the progress lines of the
+    verifying process, or anything else, are not an answer)."""
+    try:
+        item = json.loads(line)
+    except ValueError:
+        return None
+    return item if type(item) is dict and (key in item or "failed" in item) else None
 
 
 def _traced_at_no_size(out: dict) -> bool:
@@ -401,15 +434,17 @@ def _next_job(jobs: list, i: int, has_free: dict) -> int:
     return i
 
 
-def _trace_jobs(c: Claim, meta: dict) -> list:
+def _trace_jobs(meta: dict, shape: dict) -> list:
     """(f, key) for the claim's function (f = 0) and each correction (or the functions ``funcs`` of the second
-    phase), at every key of the metadata."""
+    phase), at every key of the metadata (``shape``: the claim's realization and number of corrections, sent
+    with the metadata by the job that imported the file)."""
     from stiefelsym.scene import REALIZATIONS
-    if c.realization not in REALIZATIONS:
+    if shape.get("realization") not in REALIZATIONS:
         return []
+    count = shape.get("corrections", 0)
     keys = [None if k is None else tuple(k) for k in meta["keys"]]      # (n, r) or ("r", k)
-    funcs = meta.get("funcs", range(1 + len(c.corrections)))
-    return [("f", f, k) for f in funcs if type(f) is int and 0 <= f <= len(c.corrections) for k in keys]
+    funcs = meta.get("funcs", range(1 + count))
+    return [("f", f, k) for f in funcs if type(f) is int and 0 <= f <= count for k in keys]
 
 
 #: in the tracer process, writes a BEAT line to the verifying process (:func:`_tracer`); None elsewhere
@@ -421,11 +456,11 @@ def _beat() -> None:
         _BEAT()
 
 
-def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) -> dict:
-    """In the tracer process: the claim's metadata and its graphs (``more``: the second phase's, see
-    :func:`_claim_more`), each function traced at each key in a grandchild of its own (one at a time, each
-    forked from this process, so that no job sees what another left in the file's modules).  A key whose
-    tracing ran out of time or died is recorded as such."""
+def _run_claim(path: str, ids: list, cid: str, more: dict | None, timeout: float, memory: int | None) -> dict:
+    """In the tracer process (which never imports the file): the metadata and the graphs of claim ``cid``
+    (``more``: the second phase's, see :func:`_claim_more`), each function traced at each key in a child of its
+    own that imports the file (one at a time, so that no job sees what another left: :func:`_jobs_lines`).  A key
+    whose tracing ran out of time or died is recorded as such."""
     jobs: list = [("meta",)]
     meta: dict | None = None
     results: list = []
@@ -440,7 +475,7 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                 os.close(rfd)
                 code = 0
                 try:
-                    _jobs_lines(c, more, jobs, i, memory, wfd)
+                    _jobs_lines(path, ids, cid, more, jobs, i, memory, wfd)
                 except BaseException:   # noqa: BLE001 - the parent sees where it stopped
                     code = 1
                 finally:
@@ -450,7 +485,8 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
             gc.unfreeze()
             buf = b""
             timed_out = done = False
-            deadline = time.monotonic() + (META_SECONDS if jobs[i][0] == "meta" else timeout)
+            # the job's own import first, under its deadline; then the job's budget
+            deadline, imported = time.monotonic() + IMPORT_BUDGET, False
             try:
                 while i < len(jobs) and not done:
                     chunk = next_chunk(rfd, deadline)
@@ -460,16 +496,24 @@ def _run_claim(c: Claim, more: dict | None, timeout: float, memory: int | None) 
                     if not chunk:
                         break
                     buf += chunk
-                    if b"\n" in buf:           # the grandchild's one line: its job is done
-                        done = True
+                    while b"\n" in buf and not done:
                         line, buf = buf.split(b"\n", 1)
-                        _beat()             # (before the line is read: a large graph takes time to parse)
-                        item = json.loads(line)
+                        if line == IMPORTED_MARK:
+                            if not imported:    # the job's own budget starts (and the import is progress)
+                                imported = True
+                                deadline = time.monotonic() + (META_SECONDS if jobs[i][0] == "meta" else timeout)
+                                _beat()
+                            continue
+                        item = _job_line(line, "meta" if jobs[i][0] == "meta" else "job")
+                        if item is None:    # not the job's line: something the file's code wrote on the pipe
+                            continue
+                        done = True         # the child's one line: its job is done
+                        _beat()
+                        if "failed" in item:
+                            raise ValueError(item["failed"])
                         if jobs[i][0] == "meta":
-                            if "failed" in item:
-                                raise ValueError(item["failed"])
                             meta = item["meta"]
-                            jobs += _trace_jobs(c, meta)
+                            jobs += _trace_jobs(meta, item.get("shape", {}))
                         else:
                             _, f, key = jobs[i]
                             if key is None:
@@ -573,11 +617,14 @@ def _watched(run: Callable[[], Any], seconds: float, what: str) -> Any:
 
 def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
             mark: Callable[[bytes], None]) -> bytes:
-    """The spawned interpreter's work (:func:`stiefelsym.run.sandbox.host`): import the file, then trace each claim
-    in children of its own; ``more`` (the second phase): claim id -> what :func:`_claim_more` needs, and only
-    those claims.  ``mark`` writes a line the verifying process waits for: :data:`stiefelsym.run.sandbox.IMPORTED`
-    when the import has ended, :data:`~stiefelsym.run.sandbox.BEAT` after each job of a claim (its metadata, one
-    function at one size)."""
+    """The spawned interpreter's work (:func:`stiefelsym.run.sandbox.host`): the file's claims, listed by an import
+    in a child of its own, then each claim traced job by job, each job in a child that imports the file itself
+    (:func:`_run_claim`): this process never imports the file, so that nothing the file's code leaves in a process
+    (module state, hooks run at each fork, shared memory, descriptors) reaches a job from another.  ``more`` (the
+    second phase): claim id -> what :func:`_claim_more` needs, and only those claims.  ``mark`` writes a line the
+    verifying process waits for: :data:`stiefelsym.run.sandbox.IMPORTED` when the first import has ended,
+    :data:`~stiefelsym.run.sandbox.BEAT` after each job of a claim (its metadata, one function at one size)."""
+    from stiefelsym.ir.seal import import_engine
     from stiefelsym.run.sandbox import BEAT, IMPORTED
     global _BEAT
     _die_with_parent()
@@ -586,33 +633,72 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
         os.setpgid(0, 0)        # its own process group: killed as a whole (with what the file started)
     except OSError:
         pass
-    try:
-        with _Between():        # what the import started ends with it: no process outlives it to the claims
-            reg = _import_bounded(path)
-    except CatalogError as exc:
-        return json.dumps({"error": str(exc)}).encode()
-    except ProcessesLeft as exc:
-        return json.dumps({"error": f"{path}: {exc}"}).encode()
+    import_engine()                     # once, before the forks: each child imports the file itself
+    listed = _listed(path)
+    if "error" in listed:
+        return json.dumps({"error": listed["error"]}).encode()
+    ids = listed["ids"]
     mark(IMPORTED)
     _BEAT = lambda: mark(BEAT)     # noqa: E731
     parts = []
-    for c in reg:
-        if more is not None and c.id not in more:
+    for cid in ids:
+        if more is not None and cid not in more:
             continue
         try:
-            data = json.dumps({"claim": _run_claim(c, None if more is None else more[c.id], timeout, memory)})
+            data = json.dumps({"claim": _run_claim(path, ids, cid, None if more is None else more[cid], timeout,
+                                                   memory)})
         except Exception as exc:    # noqa: BLE001 - reported as the file's error
-            data = json.dumps({"failed": [c.id, f"{type(exc).__name__}: {exc}"]})
+            data = json.dumps({"failed": [cid, f"{type(exc).__name__}: {exc}"]})
         parts.append(data.encode())
-    try:
-        import atexit
-        # the file's exit handlers run where the file ran, for EXIT_SECONDS at most
-        _watched(atexit._run_exitfuncs, EXIT_SECONDS, f"the exit handlers of {path} did not end within "
-                                                      f"{EXIT_SECONDS:.0f} s")
-    except BaseException:   # noqa: BLE001 - they change no result
-        pass
     _flush()
     return b'{"claims": [' + b",".join(parts) + b"]}"
+
+
+def _listed(path: str) -> dict:
+    """{"ids": the ids of the file's claims, in order} from an import in a child of its own, or {"error": why}."""
+    with _Between():        # what the import started ends with it: no process outlives it to the claims
+        rfd, wfd = os.pipe()
+        gc.freeze()
+        pid = os.fork()
+        if pid == 0:
+            os.close(rfd)
+            code = 0
+            try:
+                _die_with_parent()
+                try:
+                    out: dict = {"ids": [c.id for c in _import_bounded(path)]}
+                except CatalogError as exc:
+                    out = {"failed": str(exc)}
+                except ProcessesLeft as exc:
+                    out = {"failed": f"{path}: {exc}"}
+                write_fully(wfd, json.dumps(out).encode() + b"\n")
+            except BaseException:   # noqa: BLE001 - the parent sees no line
+                code = 1
+            finally:
+                _flush()
+                os._exit(code)
+        os.close(wfd)
+        gc.unfreeze()
+        buf, found = b"", None
+        deadline = time.monotonic() + IMPORT_BUDGET
+        try:
+            while found is None:
+                chunk = next_chunk(rfd, deadline)
+                if not chunk:
+                    break
+                buf += chunk
+                while b"\n" in buf and found is None:
+                    line, buf = buf.split(b"\n", 1)
+                    found = _job_line(line, "ids")      # (other lines: the file's code wrote them)
+        finally:
+            os.close(rfd)
+            _kill(pid, wait=True)
+    if found is None:
+        return {"error": f"loading {path} did not end within {IMPORT_BUDGET:.0f} s, or its process died "
+                         f"({_status_text(pid)})"}
+    if "failed" in found or type(found.get("ids")) is not list:
+        return {"error": str(found.get("failed", "the file's claims could not be listed"))}
+    return found
 
 
 #: the exit status of a second phase's process that found no request left
