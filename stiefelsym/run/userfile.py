@@ -694,8 +694,10 @@ def _listed(path: str) -> dict:
             os.close(rfd)
             _kill(pid, wait=True)
     if found is None:
-        return {"error": f"loading {path} did not end within {IMPORT_BUDGET:.0f} s, or its process died "
-                         f"({_status_text(pid)})"}
+        how = _status_text(pid)
+        if how.startswith("exited"):    # (it wrote no list: a file that ends its process, or writes for it)
+            return {"error": f"importing {path} ended without listing its claims (its process {how})"}
+        return {"error": f"loading {path} did not end within {IMPORT_BUDGET:.0f} s, or its process died ({how})"}
     if "failed" in found or type(found.get("ids")) is not list:
         return {"error": str(found.get("failed", "the file's claims could not be listed"))}
     return found
