@@ -467,22 +467,8 @@ def _run_claim(path: str, ids: list, cid: str, more: dict | None, timeout: float
     has_free: dict = {}
     i = 0
     while i < len(jobs):
-        with _Between():     # a process the grandchild left ends with it (the next job sees none)
-            rfd, wfd = os.pipe()
-            gc.freeze()
-            pid = os.fork()
-            if pid == 0:
-                os.close(rfd)
-                code = 0
-                try:
-                    _jobs_lines(path, ids, cid, more, jobs, i, memory, wfd)
-                except BaseException:   # noqa: BLE001 - the parent sees where it stopped
-                    code = 1
-                finally:
-                    _flush()
-                    os._exit(code)
-            os.close(wfd)
-            gc.unfreeze()
+        with _Between():     # a process the child left ends with it (the next job sees none)
+            pid, rfd = _child(lambda wfd: _jobs_lines(path, ids, cid, more, jobs, i, memory, wfd))
             buf = b""
             timed_out = done = False
             # the job's own import first, under its deadline; then the job's budget
@@ -654,31 +640,41 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
     return b'{"claims": [' + b",".join(parts) + b"]}"
 
 
+def _child(work: Callable[[int], None]) -> tuple[int, int]:
+    """A forked child that runs ``work(wfd)`` (it writes its answer on the pipe ``wfd``) and exits (status 1 when
+    work raised: the parent sees no answer); its pid, and the pipe's end to read."""
+    rfd, wfd = os.pipe()
+    gc.freeze()
+    pid = os.fork()
+    if pid == 0:
+        os.close(rfd)
+        code = 0
+        try:
+            work(wfd)
+        except BaseException:   # noqa: BLE001 - the parent sees where it stopped
+            code = 1
+        finally:
+            _flush()
+            os._exit(code)
+    os.close(wfd)
+    gc.unfreeze()
+    return pid, rfd
+
+
 def _listed(path: str) -> dict:
     """{"ids": the ids of the file's claims, in order} from an import in a child of its own, or {"error": why}."""
+    def listing(wfd: int) -> None:
+        _die_with_parent()
+        try:
+            out: dict = {"ids": [c.id for c in _import_bounded(path)]}
+        except CatalogError as exc:
+            out = {"failed": str(exc)}
+        except ProcessesLeft as exc:
+            out = {"failed": f"{path}: {exc}"}
+        write_fully(wfd, json.dumps(out).encode() + b"\n")
+
     with _Between():        # what the import started ends with it: no process outlives it to the claims
-        rfd, wfd = os.pipe()
-        gc.freeze()
-        pid = os.fork()
-        if pid == 0:
-            os.close(rfd)
-            code = 0
-            try:
-                _die_with_parent()
-                try:
-                    out: dict = {"ids": [c.id for c in _import_bounded(path)]}
-                except CatalogError as exc:
-                    out = {"failed": str(exc)}
-                except ProcessesLeft as exc:
-                    out = {"failed": f"{path}: {exc}"}
-                write_fully(wfd, json.dumps(out).encode() + b"\n")
-            except BaseException:   # noqa: BLE001 - the parent sees no line
-                code = 1
-            finally:
-                _flush()
-                os._exit(code)
-        os.close(wfd)
-        gc.unfreeze()
+        pid, rfd = _child(listing)
         buf, found = b"", None
         deadline = time.monotonic() + IMPORT_BUDGET
         try:
