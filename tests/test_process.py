@@ -364,8 +364,11 @@ def test_subprocess_json_stays_one_document_whatever_claims_print(tmp_path, tric
     assert proc.returncode == 0, proc.stderr
     payload = json.loads(proc.stdout)
     assert len(payload["results"]) == 6
-    for text in ("import", "body", "fd 1 in the body", "at exit", "fd 1 at exit"):
+    for text in ("import", "body", "fd 1 in the body"):
         assert text in proc.stderr
+    # the file's exit handlers run nowhere since stop 83: it is imported only in children that each do one job and
+    # end without running the exit handlers of what they imported; whatever they would print never reaches stdout
+    assert "at exit" not in proc.stdout
     proc = stiefelsym("list", "--claims", "printer.py", cwd=tmp_path)
     assert proc.returncode == 0 and "import" not in proc.stdout and "import" in proc.stderr
 
