@@ -39,3 +39,12 @@ def pi_small_false(s):
     small = twisted.multiplier_flow(s, lambda t: _neumann(t) + (_skewed_kinetic(t) - _neumann(t)) / 10**9,
                                     F=s.eta)["Pi"]
     return {"Pi": small - twisted.multiplier_flow(s, _neumann, F=s.eta)["Pi"]}
+
+
+@claim("s83-pi-tiny-false", kind="id", sizes=SIZES)
+def pi_tiny_false(s):
+    """As s83-pi-small-false with 10⁻³⁰: far below float64's resolution beside Λ, so the column's scale alone
+    would let it pass; the float and ball methods' exact confirmation at a point mod p refutes it (false)."""
+    tiny = twisted.multiplier_flow(s, lambda t: _neumann(t) + (_skewed_kinetic(t) - _neumann(t)) / 10**30,
+                                   F=s.eta)["Pi"]
+    return {"Pi": tiny - twisted.multiplier_flow(s, _neumann, F=s.eta)["Pi"]}
