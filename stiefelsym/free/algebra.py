@@ -581,11 +581,25 @@ class NCPoly:
 
     def __truediv__(self, o: Any):
         if isinstance(o, NCPoly):
-            return self._scale(se.Integer(1) / divisor(o.scalar_value()))
+            return self._scale(se.Integer(1) / divisor(o._divisor_value()))
         k = as_coef(o)
         if k is None:
             return NotImplemented
         return self._scale(se.Integer(1) / divisor(k))
+
+    def __rtruediv__(self, o: Any):
+        k = as_coef(o)
+        if k is None:
+            return NotImplemented
+        return NCPoly.scalar(k / divisor(self._divisor_value()))
+
+    def _divisor_value(self) -> Coef:
+        """This polynomial as a divisor: a plain scalar (a number, a size, λ); a scalar of the scene (a trace, a
+        pairing) is refused, in words: the free algebra has no inverse of a trace."""
+        if not self.is_scalar or any(tm for tm, _ in self.terms):
+            raise refuse("a division by a scalar that is not a number (a trace or a pairing of the scene: the "
+                         "free algebra divides by numbers, sizes and λ only)")
+        return self.scalar_value()
 
     def _mul_poly(self, o: "NCPoly") -> "NCPoly":
         if self.row == SCALAR and self.col == SCALAR:

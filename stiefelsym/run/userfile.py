@@ -99,10 +99,8 @@ BEAT_GRACE_SECONDS = 30.0
 IMPORT_BUDGET = IMPORT_SECONDS + IMPORT_GRACE_SECONDS
 #: what a job's child writes when its import of the file has ended (before its one JSON line)
 IMPORTED_MARK = b"."
-#: the exit status of a process whose import of the file (or exit handlers) outlived its watch (_watched)
+#: the exit status of a process whose import of the file outlived its watch (_watched)
 IMPORT_EXIT = 7
-#: seconds the file's exit handlers (atexit) may run
-EXIT_SECONDS = 10.0
 #: at most this much of what the file's processes print is shown
 CAPTURE_BYTES = 1 << 22
 
@@ -610,7 +608,7 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
     second phase): claim id -> what :func:`_claim_more` needs, and only those claims.  ``mark`` writes a line the
     verifying process waits for: :data:`stiefelsym.run.sandbox.IMPORTED` when the first import has ended,
     :data:`~stiefelsym.run.sandbox.BEAT` after each job of a claim (its metadata, one function at one size)."""
-    from stiefelsym.ir.seal import import_engine
+    from stiefelsym.ir.seal import import_engine, seal
     from stiefelsym.run.sandbox import BEAT, IMPORTED
     global _BEAT
     _die_with_parent()
@@ -626,6 +624,9 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
     ids = listed["ids"]
     mark(IMPORTED)
     _BEAT = lambda: mark(BEAT)     # noqa: E731
+    # the engine's fingerprint, taken once here rather than in every job's child: each child has it before it
+    # imports the file and checks the engine against it after (nothing of the file has run in this process)
+    seal()
     parts = []
     for cid in ids:
         if more is not None and cid not in more:

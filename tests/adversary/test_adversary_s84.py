@@ -1,0 +1,55 @@
+"""Stop 84's replays: the stop's own changes, each kept as a test.
+
+- own (stop 83's sweep M1): a division by a scalar of the scene (a trace) on the free scene was `undecided` with
+  the text of an internal TypeError ("... is not a plain scalar", "unsupported operand type(s) for /"); the free
+  algebra now refuses it in words, and divides by a size that is never 0 (1/r).  The fixed-size methods decide
+  both, and a false twin is refuted by them.
+- own: a negative expected rank is refused when the claim is traced: `error` under every method.
+- own: the engine's fingerprint is taken once in the tracing process, before the jobs' children import the file;
+  a file that changes the engine at import is still refused in every job (tests/test_userfile.py), and the
+  verdicts of a claims file are the same.
+"""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+S84 = Path(__file__).parent / "s84"
+
+
+def _records(path: Path, *args: str) -> dict:
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
+                          "--format", "json", *args], capture_output=True, text=True, timeout=600)
+    assert out.stdout.strip(), out.stderr[-2000:]
+    return {(r["claim"], r.get("variant"), r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
+
+
+def test_free_divisions_are_refused_in_words_or_proved():
+    recs = {key[0]: rec for key, rec in _records(S84 / "own" / "free_division.py", "--method", "free").items()}
+    for cid in ("s84-div-trace", "s84-div-trace-f", "s84-inv-trace"):
+        rec = recs[cid]
+        assert rec["verdict"] == "undecided", (cid, rec["message"])
+        assert "a division by a scalar that is not a number" in rec["message"]
+        assert "TypeError" not in rec["message"] and "plain scalar" not in rec["message"]
+    assert recs["s84-inv-size"]["verdict"] == "proved"
+    assert recs["s84-inv-size-f"]["verdict"] == "undecided"
+    assert recs["s84-inv-size-nr"]["verdict"] == "undecided"
+    assert "n - r" in recs["s84-inv-size-nr"]["message"]
+    assert recs["s84-rank-negative"]["verdict"] == "error"
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "float"])
+def test_fixed_size_methods_decide_the_divisions(method):
+    recs = _records(S84 / "own" / "free_division.py", "--method", method)
+    good = {"exact": "proved", "modular": "checked", "float": "numeric"}[method]
+    for (cid, _v, n, r), rec in recs.items():
+        if cid == "s84-rank-negative":
+            assert rec["verdict"] == "error" and "negative" in rec["message"], (n, r, rec["message"])
+        elif cid.endswith("-f"):
+            assert rec["verdict"] == "fails", (cid, n, r, rec["message"])
+        else:
+            assert rec["verdict"] == good, (cid, n, r, rec["message"])
