@@ -100,7 +100,10 @@ def divisor(k: Coef) -> Coef:
     division by n − 4 or by n − r holds for all n, r as a rational function, but is 0/0 at n = 4 or at r = n,
     so no statement for every n, r follows from it.  Accepted: k free of n, r, or k with a coefficient (as a
     polynomial in its other symbols) that is a polynomial in n, r whose coefficients all have one sign (n + r,
-    −2n, λ + n): nonzero at every size."""
+    −2n, λ + n): nonzero at every size.  A k that is identically 0 raises ZeroDivisionError (as at a fixed size:
+    1/0 would be nan, a normal form that is never 0)."""
+    if se.expand(k) == 0:
+        raise ZeroDivisionError("division by an identically zero expression")
     syms = getattr(k, "free_symbols", None)
     if not syms or not any(d in syms for d in (DIMENSIONS["n"], DIMENSIONS["r"])):
         return k

@@ -133,6 +133,11 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         # two traces of the claim disagreed: no verdict under any method
         res.verdict, res.message, res.seconds = "error", f"NotDeterministic: {exc}", time.perf_counter() - t0
         return res
+    except ZeroDivisionError as exc:
+        # a division by an expression that is identically 0 in the free algebra, so at every size (the fixed-size
+        # methods say `error` there too): an ill-formed claim, not beyond the free algebra
+        res.verdict, res.message, res.seconds = "error", f"ZeroDivisionError: {exc}", time.perf_counter() - t0
+        return res
     except (TypeError, ValueError, AttributeError, ArithmeticError) as exc:
         text = f"the claim does not run on the free algebra ({type(exc).__name__}: {exc})"
         refused = touched()

@@ -4,6 +4,8 @@
   the text of an internal TypeError ("... is not a plain scalar", "unsupported operand type(s) for /"); the free
   algebra now refuses it in words, and divides by a size that is never 0 (1/r).  The fixed-size methods decide
   both, and a false twin is refuted by them.
+- own: a division by an expression that is identically 0 was nan in the free algebra (a normal form never 0:
+  `undecided`); it is an `error` now, as under every fixed-size method.
 - own: a negative expected rank is refused when the claim is traced: `error` under every method.
 - own: the engine's fingerprint is taken once in the tracing process, before the jobs' children import the file;
   a file that changes the engine at import is still refused in every job (tests/test_userfile.py), and the
@@ -40,6 +42,8 @@ def test_free_divisions_are_refused_in_words_or_proved():
     assert recs["s84-inv-size-nr"]["verdict"] == "undecided"
     assert "n - r" in recs["s84-inv-size-nr"]["message"]
     assert recs["s84-rank-negative"]["verdict"] == "error"
+    for cid in ("s84-div-zero-size", "s84-div-zero-matrix", "s84-div-zero-trace"):
+        assert recs[cid]["verdict"] == "error" and "identically zero" in recs[cid]["message"], recs[cid]["message"]
 
 
 @pytest.mark.parametrize("method", ["exact", "modular", "float"])
@@ -49,6 +53,10 @@ def test_fixed_size_methods_decide_the_divisions(method):
     for (cid, _v, n, r), rec in recs.items():
         if cid == "s84-rank-negative":
             assert rec["verdict"] == "error" and "negative" in rec["message"], (n, r, rec["message"])
+        elif cid.startswith("s84-div-zero"):
+            # exact: a division by an identically zero expression; the sampled methods: every point a pole
+            want = "error" if method == "exact" else "inconclusive"
+            assert rec["verdict"] == want, (cid, n, r, rec["message"])
         elif cid.endswith("-f"):
             assert rec["verdict"] == "fails", (cid, n, r, rec["message"])
         else:

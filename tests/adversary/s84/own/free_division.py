@@ -60,3 +60,24 @@ def inv_size_nr(s):
 @claim("s84-rank-negative", kind="dim", sizes=SZ)
 def rank_negative(s):
     return {"rank": Rank(s.X, -1)}
+
+
+# a division by a scalar that is identically 0 (a size minus itself, a trace times 0): 1/0 was nan in the free
+# algebra (a normal form that is never 0: `undecided`); it is an `error` now, as at every fixed size
+
+@claim("s84-div-zero-size", kind="id", sizes=SZ)
+def div_zero_size(s):
+    d = s.tr(s.Ir) - s.tr(s.Ir)
+    return {"x": (1 / d) * d}
+
+
+@claim("s84-div-zero-matrix", kind="id", sizes=SZ)
+def div_zero_matrix(s):
+    d = s.tr(s.Ir) - s.tr(s.Ir)
+    return {"x": s.X / d - s.X / d}
+
+
+@claim("s84-div-zero-trace", kind="id", sizes=SZ)
+def div_zero_trace(s):
+    d = s.tr(s.P.T @ s.P) * 0
+    return {"x": 1 / d - 1 / d}
