@@ -34,7 +34,7 @@ from stiefelsym.methods import fixed_size
 from stiefelsym.methods.fixed_size import _base_result, division_probe, _entries, _short, call_claim
 from stiefelsym.results import CheckOutcome, Result
 from stiefelsym.free import FreeScene, FreeSolveError, NeedsCoordinates, RewritingError
-from stiefelsym.free.algebra import REFUSED, OperatorLetter, recording, refusals, word_key, word_str
+from stiefelsym.free.algebra import LEADING, REFUSED, NCPoly, OperatorLetter, recording, refusals, word_key, word_str
 from stiefelsym.free.certificates import CertificateWriter
 from stiefelsym.free.columns import COMPLETE
 from stiefelsym.free.rewriting import latex_text
@@ -162,6 +162,10 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         return undecided(f"the claim reads {', '.join(used)}")
     if any(isinstance(v, (Rank, Count)) for v in checks.values()):
         return undecided("ranks and counts need coordinates; decided by the fixed-size methods")
+    why = empty_at_r1(claim, checks, family)
+    if why:
+        res.verdict, res.message, res.seconds = "error", why, time.perf_counter() - t0
+        return res
     rules, outcomes, derivations, open_entries, proved_entries = [], [], [], [], []
     # a mutation analysis (or a correction search) needs the verdict only: once one entry has a nonzero
     # normal form the run is undecided whatever the others reduce to (a proof needs every entry 0), so
@@ -491,6 +495,21 @@ def graph_of_the_family(claim: Claim, func: Callable, family: SizeFamily) -> str
 #: kept with the answer (a key of ids alone could be another's once they are gone)
 _TYPED: dict[tuple, tuple] = {}
 TYPED_MEMO_SIZE = 64     # (each entry keeps its function, and a graph claim its graph, alive)
+
+
+def empty_at_r1(claim: Claim, checks: dict, family: SizeFamily | None) -> str:
+    """Why the proof would be hollow: a check whose every entry lies on ℝʳ⁻¹ (the first r − 1 columns of I_r)
+    is empty at r = 1, where every fixed-size method refuses it (a vacuous check proves nothing); "" when no
+    check is, or when no size the claim is stated for has r = 1."""
+    if not any(z.r == 1 for z in family_sizes(claim, family)):
+        return ""
+    for name, value in checks.items():
+        xs = [x for _, x in _entries(value, name)]
+        if xs and all(isinstance(x, NCPoly) and LEADING in (x.row, x.col) for x in xs):
+            return (f"check {name} lies on R^(r-1) (the first r - 1 columns of I_r): it is empty at r = 1, a size "
+                    "the claim is stated for, and a vacuous check proves nothing (as every fixed-size method says "
+                    "there); state the claim for r > 1 (where=lambda n, r: r > 1)")
+    return ""
 
 
 def typed_at_stated_sizes(claim: Claim, func: Callable) -> str:

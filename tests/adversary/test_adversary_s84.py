@@ -6,6 +6,10 @@
   both, and a false twin is refuted by them.
 - own: a division by an expression that is identically 0 was nan in the free algebra (a normal form never 0:
   `undecided`); it is an `error` now, as under every fixed-size method.
+- s82's free H3: checks on the (r − 1)-dimensional object of E_<r (twisted.leading_basis_vectors) were proved
+  for all n, r by the free method, although they are empty at r = 1, a stated size, where every fixed-size method
+  says `error` (a vacuous check proves nothing).  The free method says `error` too now; stated for r > 1, the same
+  checks are proved.
 - own: a negative expected rank is refused when the claim is traced: `error` under every method.
 - own: the engine's fingerprint is taken once in the tracing process, before the jobs' children import the file;
   a file that changes the engine at import is still refused in every job (tests/test_userfile.py), and the
@@ -61,3 +65,22 @@ def test_fixed_size_methods_decide_the_divisions(method):
             assert rec["verdict"] == "fails", (cid, n, r, rec["message"])
         else:
             assert rec["verdict"] == good, (cid, n, r, rec["message"])
+
+
+S82_EMPTY = Path(__file__).parent / "s82" / "free" / "b9_empty.py"
+
+
+def test_free_checks_empty_at_r1_are_refused(tmp_path):
+    recs = {key[0]: rec for key, rec in _records(S82_EMPTY, "--method", "free").items()}
+    for cid in ("b9-lead-gram", "b9-lead-gram-false", "b9-lead-er"):
+        assert recs[cid]["verdict"] == "error", (cid, recs[cid]["message"])
+        assert "empty at r = 1" in recs[cid]["message"]
+    exact = _records(S82_EMPTY, "--method", "exact", "--size", "3,1")
+    assert {rec["verdict"] for rec in exact.values()} == {"error"}
+    # stated for r > 1: proved for every n, r there (the false twin is left to the fixed-size methods)
+    stated = tmp_path / "b9_r2.py"
+    stated.write_text(S82_EMPTY.read_text().replace("SZ = admissible(n_max=4)",
+                                                    "SZ = admissible(n_max=4, where=lambda n, r: r > 1)"))
+    recs = {key[0]: rec for key, rec in _records(stated, "--method", "free").items()}
+    assert recs["b9-lead-gram"]["verdict"] == "proved" and recs["b9-lead-er"]["verdict"] == "proved"
+    assert recs["b9-lead-gram-false"]["verdict"] == "undecided"
