@@ -707,7 +707,8 @@ class Mat:
             return NotImplemented
         if isinstance(c, _SCALARS):
             return self._scalar(self._field.const(Fraction(1) / Fraction(c)))
-        return self._scalar(self._field.const(1) / c)
+        reciprocal = getattr(self._field, "reciprocal", None)     # (a field with a door for divisors: free)
+        return self._scalar(reciprocal(c) if reciprocal is not None else self._field.const(1) / c)
 
     # -- linear algebra ---------------------------------------------------
     def trace(self):

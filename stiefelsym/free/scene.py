@@ -269,6 +269,17 @@ class FreeField(Field):
     def param(self, name: str, rng=None) -> Any:
         return se.Symbol(name)
 
+    def reciprocal(self, c: Any) -> Any:
+        """1/c through the free algebra's door for divisors (:func:`~stiefelsym.free.algebra.divisor`): a number
+        of the scene that is identically 0 raises ZeroDivisionError (1/0 would be nan or zoo, a normal form that is
+        never 0), one that may be 0 at some size is refused."""
+        if isinstance(c, NCPoly):
+            return NCPoly.scalar(1) / c
+        k = as_coef(c)
+        if k is None:           # (a number of a tangent scene: its own division)
+            return self.const(1) / c
+        return se.Integer(1) / divisor(k)
+
     def normalize(self, x: Any) -> Any:
         if type(x) is NCPoly:
             if self.lazy:   # collect coefficients only

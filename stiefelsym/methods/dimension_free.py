@@ -233,6 +233,14 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
     if open_entries:
         pos, red = open_entries[0]
         res.residual = f"{pos}: nf = {_short(red.normal_form)}"
+        infinite = next((p for p, rd in open_entries if _infinite(rd.normal_form)), None)
+        if infinite is not None:
+            # a division of numbers of the scene by one that is identically 0 (1/(λ − λ)): symengine's 1/0 is
+            # zoo and 0·zoo is nan, a normal form that is never 0; an error at every fixed size too
+            res.verdict, res.seconds = "error", time.perf_counter() - t0
+            res.message = (f"ZeroDivisionError: division by an identically zero expression (the normal form of "
+                           f"{infinite} holds 1/0 or 0/0)")
+            return res
         if first_open_only:
             return undecided(f"a residual entry has a nonzero normal form ({res.residual}; the other entries were "
                              "not reduced: a mutation analysis needs the verdict only); the fixed-size methods decide")
@@ -495,6 +503,14 @@ def graph_of_the_family(claim: Claim, func: Callable, family: SizeFamily) -> str
 #: kept with the answer (a key of ids alone could be another's once they are gone)
 _TYPED: dict[tuple, tuple] = {}
 TYPED_MEMO_SIZE = 64     # (each entry keeps its function, and a graph claim its graph, alive)
+
+
+def _infinite(x: Any) -> bool:
+    """Whether a normal form holds an infinity or nan among its coefficients (symengine's 1/0 and 0/0)."""
+    import symengine as se
+    terms = getattr(x, "terms", None)
+    coefs = terms.values() if isinstance(terms, dict) else (x,)
+    return any(hasattr(c, "has") and (c.has(se.zoo) or c.has(se.nan) or c.has(se.oo)) for c in coefs)
 
 
 def empty_at_r1(claim: Claim, checks: dict, family: SizeFamily | None) -> str:

@@ -26,7 +26,9 @@ Where that is not available (not Linux, no ``unshare``, user namespaces disabled
 the same interpreter is spawned without namespaces (:data:`SPAWN`): it still holds nothing of the run, but
 it can read ``/proc/<ppid>/cmdline``, write with the user's rights, reach the network and connect to any Unix
 socket the user can (only the descriptors it would inherit are closed, as in namespaces); every record of
-such a file says so (:func:`note`).
+such a file says so (:func:`note`).  The verifying process is then made not dumpable before the first such
+interpreter, so that a process of the same user cannot read or write its memory (process_vm_writev, ptrace;
+a process of root can).
 
 The first line the interpreter writes is its confinement, written before anything of the file runs: a
 setup that fails there falls back to the plain spawn, a file cannot ask for that fallback.

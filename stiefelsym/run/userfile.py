@@ -362,6 +362,15 @@ def _die_with_parent() -> None:
         prctl(1, signal.SIGKILL)                # PR_SET_PDEATHSIG
 
 
+def _not_dumpable(what: str) -> None:
+    """Make this process not dumpable (PR_SET_DUMPABLE 0, inherited by its forks): a process of the same user, a
+    child that runs a claims file's code included, can then neither read nor write its memory (process_vm_readv,
+    process_vm_writev, ptrace, /proc/PID/mem)."""
+    import ctypes
+    if ctypes.CDLL(None, use_errno=True).prctl(4, 0, 0, 0, 0) != 0:       # PR_SET_DUMPABLE, 0
+        raise OSError(ctypes.get_errno(), f"{what} could not be made non-dumpable")
+
+
 def _jobs_lines(path: str, ids: list, cid: str, more: dict | None, jobs: list, start: int, memory: int | None,
                 wfd: int) -> None:
     """A child: the job ``start`` of claim ``cid`` (its metadata, or one function traced at one key), one JSON
@@ -612,6 +621,9 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
     from stiefelsym.run.sandbox import BEAT, IMPORTED
     global _BEAT
     _die_with_parent()
+    # no child reads or writes this process's memory (process_vm_writev, ptrace: stop 84's h1 changed an engine
+    # method here from the listing child's import, before the fingerprint below was taken)
+    _not_dumpable("the tracing process")
     sys.dont_write_bytecode = True      # an honest import here writes no byte code into the engine's folders
     try:
         os.setpgid(0, 0)        # its own process group: killed as a whole (with what the file started)
@@ -710,11 +722,9 @@ def _tracer_by_size(path: str, requests: int, answer: int, timeout: float, memor
     size) and writing its answer (one line) to ``answer`` itself, until a child finds no request left.  This
     process reads no request and no answer, and is not dumpable (no child reads its memory or descriptors through
     /proc): a function traced at a size sees that size only, not the run's other sizes, nor how many there are."""
-    import ctypes
     from stiefelsym.ir.seal import import_engine
     _die_with_parent()
-    if ctypes.CDLL(None, use_errno=True).prctl(4, 0, 0, 0, 0) != 0:       # PR_SET_DUMPABLE, 0
-        raise OSError(ctypes.get_errno(), "the second phase's process could not be made non-dumpable")
+    _not_dumpable("the second phase's process")
     import_engine()                     # once, before the forks: each child imports the file itself
     _flush()
     while True:
@@ -1333,6 +1343,10 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), only: Iter
         nonlocal engine
         if not spawned:
             engine = _preload()
+        # without a PID namespace the file's processes can name this one (its parent's parent): no process of the
+        # same user reads or writes its memory (process_vm_writev, ptrace) once it is not dumpable (for the rest of
+        # its life: a debugger attaches before the file is loaded, or runs as root)
+        _not_dumpable("the verifying process")
 
     sys.stdout.flush()
     sys.stderr.flush()
