@@ -99,9 +99,9 @@ def divisor(k: Coef) -> Coef:
     """k, as a divisor: refused (recorded) when it depends on the sizes n, r and may be 0 at some size: a
     division by n − 4 or by n − r holds for all n, r as a rational function, but is 0/0 at n = 4 or at r = n,
     so no statement for every n, r follows from it.  k is put over one denominator, k = N/D (N, D polynomials),
-    and each of N and D must be nonzero at every size: free of n, r, or with a coefficient (as a polynomial in
-    its other symbols) that is a polynomial in n, r whose coefficients all have one sign (n + r, −2n, λ + n).  (A
-    pole of k at a size is refused as a zero of N is: 1/(n + r) − 1/(2n) = (n − r)/(2n(n + r)) is 0 at r = n.)
+    and each of N and D must be nonzero at every size n ≥ r ≥ 1 by :func:`_nonzero_at_every_size` (n + r, −2n,
+    λ + n, n − r + 1).  (A pole of k at a size is refused as a zero of N is: 1/(n + r) − 1/(2n) =
+    (n − r)/(2n(n + r)) is 0 at r = n.)
     A k that is identically 0 raises ZeroDivisionError (as at a fixed size: 1/0 would be nan, a normal form that
     is never 0)."""
     if se.expand(k) == 0:
@@ -111,32 +111,40 @@ def divisor(k: Coef) -> Coef:
         return k
     import sympy
     num, den = sympy.fraction(sympy.cancel(sympy.sympify(k)))
+    if num == 0:
+        raise ZeroDivisionError("division by an identically zero expression")
     if not (_nonzero_at_every_size(se.sympify(num)) and _nonzero_at_every_size(se.sympify(den))):
         raise refuse(f"a division by {k}, an expression in the sizes that may vanish at some n, r")
     return k
 
 
 def _nonzero_at_every_size(p: Coef) -> bool:
-    """Whether the polynomial p is nonzero at every size n ≥ r ≥ 1 by the one-sign test of :func:`divisor`
-    (False also where n or r occur other than as powers: that is no polynomial in the sizes)."""
-    sizes = {DIMENSIONS["n"], DIMENSIONS["r"]}
-    if not any(d in getattr(p, "free_symbols", ()) for d in sizes):
+    """Whether the polynomial p is nonzero at every size n ≥ r ≥ 1: with r = 1 + e and n = 1 + e + d (d, e ≥ 0
+    integers), p as a polynomial in its other symbols has a coefficient, a polynomial in d and e, whose
+    coefficients all have one sign and whose constant term is not 0 (so it is at least that constant in size
+    wherever d, e ≥ 0: n + r, n − r + 1, 2n − r, n² − nr + r², −2n pass; n − r, r − 1, 2r − n do not).  False
+    also where n or r occur other than in powers (that is no polynomial in the sizes)."""
+    n, r = DIMENSIONS["n"], DIMENSIONS["r"]
+    sizes = {n, r}
+    if not any(x in getattr(p, "free_symbols", ()) for x in sizes):
         return True
+    d, e = se.Dummy("d"), se.Dummy("e")
+    q = se.expand(p.subs({n: 1 + e + d, r: 1 + e}))
+    steps = {d, e}
     groups: dict[Any, dict] = {}
-    for mono, c in se.expand(p).as_coefficients_dict().items():
+    for mono, c in q.as_coefficients_dict().items():
         if c == 0:                  # (the constant term 0 is listed too)
             continue
         powers = mono.as_powers_dict().items() if mono != 1 else ()
-        for f, e in powers:
-            if f in sizes and not (se.sympify(e).is_Integer and e > 0):
+        for f, x in powers:
+            if f in steps and not (se.sympify(x).is_Integer and x > 0):
                 return False
-            if f not in sizes and sizes & set(getattr(f, "free_symbols", ())):
+            if f not in steps and (steps | sizes) & set(getattr(f, "free_symbols", ())):
                 return False
-        rest = se.Mul(*[f ** e for f, e in powers if f not in sizes])
-        if sizes & set(getattr(c, "free_symbols", ())):
-            return False
-        groups.setdefault(rest, {})[se.Mul(*[f ** e for f, e in powers if f in sizes])] = se.sympify(c)
-    return any(all(c.is_Number for c in g.values()) and (all(c > 0 for c in g.values()) or all(c < 0 for c in g.values()))
+        rest = se.Mul(*[f ** x for f, x in powers if f not in steps])
+        groups.setdefault(rest, {})[se.Mul(*[f ** x for f, x in powers if f in steps])] = se.sympify(c)
+    return any(all(c.is_Number for c in g.values()) and g.get(se.Integer(1), 0) != 0
+               and (all(c > 0 for c in g.values()) or all(c < 0 for c in g.values()))
                for g in groups.values())
 
 

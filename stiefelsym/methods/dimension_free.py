@@ -162,9 +162,11 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         return undecided(f"the claim reads {', '.join(used)}")
     if any(isinstance(v, (Rank, Count)) for v in checks.values()):
         return undecided("ranks and counts need coordinates; decided by the fixed-size methods")
-    why = empty_at_r1(claim, checks, family)
-    if why:
-        res.verdict, res.message, res.seconds = "error", why, time.perf_counter() - t0
+    verdict, why = empty_at_r1(claim, checks, family)
+    if verdict == "undecided":
+        return undecided(why)
+    if verdict:
+        res.verdict, res.message, res.seconds = verdict, why, time.perf_counter() - t0
         return res
     rules, outcomes, derivations, open_entries, proved_entries = [], [], [], [], []
     # a mutation analysis (or a correction search) needs the verdict only: once one entry has a nonzero
@@ -513,19 +515,57 @@ def _infinite(x: Any) -> bool:
     return any(hasattr(c, "has") and (c.has(se.zoo) or c.has(se.nan) or c.has(se.oo)) for c in coefs)
 
 
-def empty_at_r1(claim: Claim, checks: dict, family: SizeFamily | None) -> str:
-    """Why the proof would be hollow: a check whose every entry lies on ℝʳ⁻¹ (the first r − 1 columns of I_r)
-    is empty at r = 1, where every fixed-size method refuses it (a vacuous check proves nothing); "" when no
-    check is, or when no size the claim is stated for has r = 1."""
-    if not any(z.r == 1 for z in family_sizes(claim, family)):
-        return ""
+#: how far the statement's own condition (``where``) is read for a size with r = 1 (:func:`_r1_stated`)
+R1_READ_UP_TO = 64
+
+
+def _r1_stated(claim: Claim, family: SizeFamily | None) -> bool | None:
+    """Whether the claim is stated (in ``family``) at a size with r = 1: read from the declarations (r_min,
+    r_is_n, r_in, n_min), and from the condition ``where`` at n <= R1_READ_UP_TO; None when only a condition
+    beyond that could tell (it is a function: no bound on the n it admits r = 1 at)."""
+    spec = claim.sizes
+    if family is not None and (family.r not in (1, None) or (family.r is None and family.n_min > 1)):
+        return False
+    if spec.r_min >= 2 or (spec.r_is_n and spec.n_min >= 2):
+        return False
+    if spec.r_in and 1 not in spec.r_in and ("n" not in spec.r_in or spec.n_min >= 2):
+        return False
+    top = min(spec.n_max or R1_READ_UP_TO, R1_READ_UP_TO)
+    try:
+        for n in range(max(spec.n_min, 1), top + 1):
+            if (family is None or family.holds(n, 1)) and spec.admits(n, 1):
+                return True
+    except Exception:   # noqa: BLE001 - a condition that cannot be read says nothing
+        return None
+    if spec.where is None or (spec.n_max is not None and spec.n_max <= R1_READ_UP_TO):
+        return False
+    return None
+
+
+def empty_at_r1(claim: Claim, checks: dict, family: SizeFamily | None) -> tuple[str, str]:
+    """("error", why) when a check whose every entry lies on ℝʳ⁻¹ (the first r − 1 columns of I_r) is empty at a
+    size the claim is stated for with r = 1, where every fixed-size method refuses it (a vacuous check proves
+    nothing); ("undecided", why) when whether r = 1 is stated is not read from the statement (a condition
+    beyond n = R1_READ_UP_TO); ("", "") when no check is on ℝʳ⁻¹ alone or r = 1 is not stated."""
+    empty = None
     for name, value in checks.items():
         xs = [x for _, x in _entries(value, name)]
         if xs and all(isinstance(x, NCPoly) and LEADING in (x.row, x.col) for x in xs):
-            return (f"check {name} lies on R^(r-1) (the first r - 1 columns of I_r): it is empty at r = 1, a size "
-                    "the claim is stated for, and a vacuous check proves nothing (as every fixed-size method says "
-                    "there); state the claim for r > 1 (where=lambda n, r: r > 1)")
-    return ""
+            empty = name
+            break
+    if empty is None:
+        return "", ""
+    stated = _r1_stated(claim, family)
+    if stated is False:
+        return "", ""
+    if stated is None:
+        return "undecided", (f"check {empty} lies on R^(r-1) (the first r - 1 columns of I_r), which is empty at "
+                             f"r = 1, and whether the statement admits r = 1 is read from its condition (where=) up "
+                             f"to n = {R1_READ_UP_TO} only: declare admissible(..., r_min=2) for a proof for "
+                             "every n, r >= 2; decided by the fixed-size methods")
+    return "error", (f"check {empty} lies on R^(r-1) (the first r - 1 columns of I_r): it is empty at r = 1, a size "
+                     "the claim is stated for, and a vacuous check proves nothing (as every fixed-size method says "
+                     "there); state the claim for r >= 2 (admissible(..., r_min=2))")
 
 
 def typed_at_stated_sizes(claim: Claim, func: Callable) -> str:

@@ -18,6 +18,11 @@
   The tracing process is not dumpable now (nor, without namespaces, the verifying process).
 - h1 M1: a matrix or a number of the free scene divided by one that is identically 0 (s.q(0, 1), λ − λ) gave
   zoo or nan, a normal form never 0 (`undecided`); it is an `error` now, as under every fixed-size method.
+- h3 W1: that rule read the listed sizes only: a condition admitting r = 1 beyond them (r > 1 or n > 3) was proved
+  for every n, r.  Whether r = 1 is stated is read from the declarations and from the condition up to n = 64; a
+  condition that says no r = 1 there leaves the claim undecided (declare r_min=2).
+- h3 I1, F1: a divisor 0 as a rational function (after cancelling) raises; divisors never 0 on n >= r >= 1 with
+  coefficients of both signs (n − r + 1, 2n − r, n² − nr + r²) are accepted (r = 1 + e, n = 1 + e + d).
 - own: a negative expected rank is refused when the claim is traced: `error` under every method.
 - own: the engine's fingerprint is taken once in the tracing process, before the jobs' children import the file;
   a file that changes the engine at import is still refused in every job (tests/test_userfile.py), and the
@@ -85,13 +90,32 @@ def test_free_checks_empty_at_r1_are_refused(tmp_path):
         assert "empty at r = 1" in recs[cid]["message"]
     exact = _records(S82_EMPTY, "--method", "exact", "--size", "3,1")
     assert {rec["verdict"] for rec in exact.values()} == {"error"}
-    # stated for r > 1: proved for every n, r there (the false twin is left to the fixed-size methods)
+    # declared for r >= 2: proved for every n, r there (the false twin is left to the fixed-size methods)
     stated = tmp_path / "b9_r2.py"
-    stated.write_text(S82_EMPTY.read_text().replace("SZ = admissible(n_max=4)",
-                                                    "SZ = admissible(n_max=4, where=lambda n, r: r > 1)"))
+    stated.write_text(S82_EMPTY.read_text().replace("SZ = admissible(n_max=4)", "SZ = admissible(n_max=4, r_min=2)"))
     recs = {key[0]: rec for key, rec in _records(stated, "--method", "free").items()}
     assert recs["b9-lead-gram"]["verdict"] == "proved" and recs["b9-lead-er"]["verdict"] == "proved"
     assert recs["b9-lead-gram-false"]["verdict"] == "undecided"
+    # a condition (where=) is read up to n = 64 only: r > 1 there is no proof for every n (h3's W1: r > 1 or n > 3
+    # admits r = 1 beyond the listed sizes and was proved); undecided, with the way out
+    cond = tmp_path / "b9_where.py"
+    cond.write_text(S82_EMPTY.read_text().replace("SZ = admissible(n_max=4)",
+                                                  "SZ = admissible(n_max=4, where=lambda n, r: r > 1)"))
+    recs = {key[0]: rec for key, rec in _records(cond, "--method", "free").items()}
+    assert recs["b9-lead-gram"]["verdict"] == "undecided" and "r_min=2" in recs["b9-lead-gram"]["message"]
+    beyond = tmp_path / "b9_beyond.py"
+    beyond.write_text(S82_EMPTY.read_text().replace("SZ = admissible(n_max=4)",
+                                                    "SZ = admissible(n_max=3, where=lambda n, r: r > 1 or n > 3)"))
+    recs = {key[0]: rec for key, rec in _records(beyond, "--method", "free").items()}
+    assert recs["b9-lead-gram"]["verdict"] == "error" and "empty at r = 1" in recs["b9-lead-gram"]["message"]
+
+
+def test_free_divisors_nonzero_on_every_size_are_accepted():
+    """h3's F1: divisors that are never 0 on n >= r >= 1 although their coefficients in n, r have both signs
+    (n − r + 1, 2n − r, n² − nr + r²) were refused; with r = 1 + e, n = 1 + e + d they pass, n − r does not."""
+    recs = {key[0]: rec for key, rec in _records(S84 / "h3" / "h3_div.py", "--method", "free").items()}
+    for cid in ("h3-a-nr1", "h3-a-2nr", "h3-a-quad", "h3-a-negpow"):
+        assert recs[cid]["verdict"] == "proved", (cid, recs[cid]["message"])
 
 
 H1 = S84 / "h1"
