@@ -163,18 +163,22 @@ def check_certificate(data: Any) -> CheckReport:
 
 def may_vanish_at_a_size(den: Any) -> bool:
     """Whether the polynomial ``den`` (in the sizes n, r and generic parameters) may be identically 0 in the
-    parameters at some size: False when it has no n, r, or when one of its coefficients as a polynomial in the
-    parameters is a polynomial in n, r whose coefficients have one sign (nonzero at every size); else True."""
-    sizes, groups = {se.Symbol("n"), se.Symbol("r")}, {}
-    for mono, c in se.expand(den).as_coefficients_dict().items():
-        powers = mono.as_powers_dict().items() if c != 0 and mono != 1 else ()
-        if c != 0:
-            groups.setdefault(se.Mul(*[f ** k for f, k in powers if f not in sizes]), []).append(
-                (se.sympify(c), {f for f, _ in powers if f in sizes}))
-    if not any(s for g in groups.values() for _, s in g):
+    parameters at some size n >= r >= 1: False when it has no n, r, or when, written in d = n − r >= 0 and
+    e = r − 1 >= 0, one of its coefficients as a polynomial in the parameters is a polynomial in d, e whose
+    coefficients have one sign and whose constant term is not 0 (so nonzero at every size); else True."""
+    n, r, d, e, groups = se.Symbol("n"), se.Symbol("r"), se.Dummy("d"), se.Dummy("e"), {}
+    if not ({n, r} & set(se.sympify(den).free_symbols)):
         return False
-    return not any(all(c.is_Number for c, _ in g) and (all(c > 0 for c, _ in g) or all(c < 0 for c, _ in g))
-                   for g in groups.values())
+    for mono, c in se.expand(se.sympify(den).subs({n: 1 + e + d, r: 1 + e})).as_coefficients_dict().items():
+        powers = mono.as_powers_dict().items() if c != 0 and mono != 1 else ()
+        if any((f in (d, e) and not (se.sympify(k).is_Integer and k > 0)) or (f not in (d, e) and {n, r, d, e} & set(
+                getattr(f, "free_symbols", ()))) for f, k in powers):
+            return True         # the sizes other than in powers: no polynomial in them
+        if c != 0:
+            groups.setdefault(se.Mul(*[f ** k for f, k in powers if f not in (d, e)]), []).append(
+                (se.sympify(c), not any(f in (d, e) for f, _ in powers)))
+    return not any(all(c.is_Number for c, _ in g) and any(const for _, const in g)
+                   and (all(c > 0 for c, _ in g) or all(c < 0 for c, _ in g)) for g in groups.values())
 
 
 def check_cases(data: dict) -> CheckReport:
