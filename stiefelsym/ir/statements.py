@@ -44,8 +44,6 @@ class Rank:
         _as_int(self, "expected", "an expected rank")
         if type(self.expected) is not int or type(self.generic) is not bool:
             raise TypeError("Rank: the expected rank is an int and generic a bool")
-        if self.expected < 0:
-            raise ValueError(f"Rank: the expected rank {self.expected} is negative (a rank is 0 or more)")
         if type(self.meaning) is not str:
             raise TypeError("Rank: the meaning is a string")
         if self.kernel is not None and not self.generic:
