@@ -168,3 +168,18 @@ def test_no_ancestor_of_the_import_is_readable(confine, monkeypatch):
         monkeypatch.setenv("STIEFELSYM_CONFINE", "spawn")
     recs = _records(S84 / "own" / "vm_read_ancestors.py", "--method", "exact")
     assert {rec["verdict"] for rec in recs.values()} == {"proved"}, [rec["message"] for rec in recs.values()]
+
+
+H2 = S84 / "h2" / "claims" / "h2_sec6.py"
+
+
+def test_hidden_section6_notes_replay():
+    """h2's notes on §6 (no wrong verdict, two slips of the paper the catalog does not list yet): Θ is invariant
+    under the reflection of O(r) \\ SO(r) (the Z2 of the covering; the twin fails), and the pencil bracket at
+    λ₁ + λ₂ = 0 has rank n² − n at every point (no Lie–Poisson bracket of gl(n) there)."""
+    recs = _records(H2, "h2-theta-reflection", "h2-theta-reflection-twin", "h2-lambda-1m1-rank-everywhere",
+                    "--method", "exact", "--size", "3,2")
+    verdicts = {key[0]: rec["verdict"] for key, rec in recs.items()}
+    assert verdicts["h2-theta-reflection"] == "proved"
+    assert verdicts["h2-theta-reflection-twin"] == "fails"
+    assert verdicts["h2-lambda-1m1-rank-everywhere"] == "proved"
