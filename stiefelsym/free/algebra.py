@@ -95,56 +95,58 @@ DIMENSIONS[LEADING] = DIMENSIONS["r"] - 1
 Coef = Any  # a symengine expression
 
 
+#: the steps d = n − r >= 0 and e = r − 1 >= 0 in which the door for divisors writes a size (n = 1 + e + d,
+#: r = 1 + e): plain symbols of reserved names, the same after a round trip through sympy
+_STEPS = (se.Symbol("stiefelsym_size_step_d"), se.Symbol("stiefelsym_size_step_e"))
+
+
 def divisor(k: Coef) -> Coef:
     """k, as a divisor: refused (recorded) when it depends on the sizes n, r and may be 0 at some size: a
     division by n − 4 or by n − r holds for all n, r as a rational function, but is 0/0 at n = 4 or at r = n,
     so no statement for every n, r follows from it.  k is put over one denominator, k = N/D (N, D polynomials),
     and each of N and D must be nonzero at every size n ≥ r ≥ 1 by :func:`_nonzero_at_every_size` (n + r, −2n,
     λ + n, n − r + 1).  (A pole of k at a size is refused as a zero of N is: 1/(n + r) − 1/(2n) =
-    (n − r)/(2n(n + r)) is 0 at r = n.)
-    A k that is identically 0 raises ZeroDivisionError (as at a fixed size: 1/0 would be nan, a normal form that
-    is never 0)."""
+    (n − r)/(2n(n + r)) is 0 at r = n.)  A k that is identically 0 raises ZeroDivisionError (as at a fixed size:
+    1/0 would be nan, a normal form that is never 0)."""
     if se.expand(k) == 0:
         raise ZeroDivisionError("division by an identically zero expression")
     syms = getattr(k, "free_symbols", None)
-    if not syms or not any(d in syms for d in (DIMENSIONS["n"], DIMENSIONS["r"])):
+    n, r = DIMENSIONS["n"], DIMENSIONS["r"]
+    if not syms or not any(x in syms for x in (n, r)):
         return k
     import sympy
-    num, den = sympy.fraction(sympy.cancel(sympy.sympify(k)))
+    d, e = _STEPS
+    # the sizes written in the steps before sympy sees them (a dimension symbol does not survive the round trip
+    # in every symengine version)
+    num, den = sympy.fraction(sympy.cancel(sympy.sympify(k.subs({n: 1 + e + d, r: 1 + e}))))
     if num == 0:
         raise ZeroDivisionError("division by an identically zero expression")
-    if not (_nonzero_at_every_size(se.sympify(num)) and _nonzero_at_every_size(se.sympify(den))):
+    if not (_nonzero_at_every_size(num) and _nonzero_at_every_size(den)):
         raise refuse(f"a division by {k}, an expression in the sizes that may vanish at some n, r")
     return k
 
 
-def _nonzero_at_every_size(p: Coef) -> bool:
-    """Whether the polynomial p is nonzero at every size n ≥ r ≥ 1: with r = 1 + e and n = 1 + e + d (d, e ≥ 0
-    integers), p as a polynomial in its other symbols has a coefficient, a polynomial in d and e, whose
+def _nonzero_at_every_size(p: Any) -> bool:
+    """Whether the sympy polynomial p, in the steps d, e (n = 1 + e + d, r = 1 + e) and other symbols, is nonzero
+    at every size: as a polynomial in its other symbols it has a coefficient, a polynomial in d and e, whose
     coefficients all have one sign and whose constant term is not 0 (so it is at least that constant in size
-    wherever d, e ≥ 0: n + r, n − r + 1, 2n − r, n² − nr + r², −2n pass; n − r, r − 1, 2r − n do not).  False
-    also where n or r occur other than in powers (that is no polynomial in the sizes)."""
-    n, r = DIMENSIONS["n"], DIMENSIONS["r"]
-    sizes = {n, r}
-    if not any(x in getattr(p, "free_symbols", ()) for x in sizes):
+    wherever d, e ≥ 0: n + r, n − r + 1, 2n − r, n² − nr + r², −2n pass; n − r, r − 1, 2r − n do not).  False also
+    where p is no polynomial in them (a size under a root)."""
+    import sympy
+    d, e = (sympy.Symbol(x.name) for x in _STEPS)
+    if not ({d, e} & p.free_symbols):
         return True
-    d, e = se.Dummy("d"), se.Dummy("e")
-    q = se.expand(p.subs({n: 1 + e + d, r: 1 + e}))
-    steps = {d, e}
-    groups: dict[Any, dict] = {}
-    for mono, c in q.as_coefficients_dict().items():
-        if c == 0:                  # (the constant term 0 is listed too)
-            continue
-        powers = mono.as_powers_dict().items() if mono != 1 else ()
-        for f, x in powers:
-            if f in steps and not (se.sympify(x).is_Integer and x > 0):
-                return False
-            if f not in steps and (steps | sizes) & set(getattr(f, "free_symbols", ())):
-                return False
-        rest = se.Mul(*[f ** x for f, x in powers if f not in steps])
-        groups.setdefault(rest, {})[se.Mul(*[f ** x for f, x in powers if f in steps])] = se.sympify(c)
-    return any(all(c.is_Number for c in g.values()) and g.get(se.Integer(1), 0) != 0
-               and (all(c > 0 for c in g.values()) or all(c < 0 for c in g.values()))
+    others = sorted(p.free_symbols - {d, e}, key=str)
+    try:
+        poly = sympy.Poly(p, *others, d, e)
+    except sympy.PolynomialError:
+        return False
+    groups: dict = {}
+    for monom, c in poly.terms():
+        if not c.is_number:
+            return False
+        groups.setdefault(monom[:-2], {})[monom[-2:]] = c
+    return any(g.get((0, 0), 0) != 0 and (all(c > 0 for c in g.values()) or all(c < 0 for c in g.values()))
                for g in groups.values())
 
 

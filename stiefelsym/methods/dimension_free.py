@@ -508,11 +508,15 @@ TYPED_MEMO_SIZE = 64     # (each entry keeps its function, and a graph claim its
 
 
 def _infinite(x: Any) -> bool:
-    """Whether a normal form holds an infinity or nan among its coefficients (symengine's 1/0 and 0/0)."""
+    """Whether a normal form holds an infinity or nan among its coefficients (symengine's 1/0 and 0/0), found by
+    walking each coefficient's tree (``has`` takes symbols only in older symengine)."""
     import symengine as se
+    bad = (se.zoo, se.nan, se.oo, -se.oo)
+
+    def walk(e: Any) -> bool:
+        return any(e == b for b in bad) or any(walk(a) for a in getattr(e, "args", ()))
     terms = getattr(x, "terms", None)
-    coefs = terms.values() if isinstance(terms, dict) else (x,)
-    return any(hasattr(c, "has") and (c.has(se.zoo) or c.has(se.nan) or c.has(se.oo)) for c in coefs)
+    return any(walk(c) for c in (terms.values() if isinstance(terms, dict) else (x,)))
 
 
 #: how far the statement's own condition (``where``) is read for a size with r = 1 (:func:`_r1_stated`)
