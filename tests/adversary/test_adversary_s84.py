@@ -131,6 +131,12 @@ def test_free_size_poles_behind_a_common_denominator_are_refused():
         assert "may vanish at some n, r" in recs[cid]["message"]
     for cid in ids[6:]:         # true, with divisors that are never 0
         assert recs[cid]["verdict"] == "proved", (cid, recs[cid]["message"])
+    # the negative controls: false twins through the same divisions are never proved (exact refutes them)
+    twins = ["h1-pole-2r-f", "h1-negpow-f", "h1-num-first-f", "h1-lam-mix-f", "h1-fraction-f", "h1-zero-rat-coef-f"]
+    recs = {key[0]: rec for key, rec in _records(H1 / "free_div.py", *twins, "--method", "free").items()}
+    assert {cid: recs[cid]["verdict"] for cid in twins} == dict.fromkeys(twins, "undecided")
+    exact = _records(H1 / "free_div.py", *twins[1:], "--method", "exact", "--size", "3,2")
+    assert {rec["verdict"] for rec in exact.values()} == {"fails"}, [(k, r["message"][:80]) for k, r in exact.items()]
 
 
 def test_free_division_by_an_identically_zero_number_is_an_error():
@@ -183,3 +189,10 @@ def test_hidden_section6_notes_replay():
     assert verdicts["h2-theta-reflection"] == "proved"
     assert verdicts["h2-theta-reflection-twin"] == "fails"
     assert verdicts["h2-lambda-1m1-rank-everywhere"] == "proved"
+
+
+@pytest.mark.parametrize("method", ["free", "exact", "modular", "float"])
+def test_false_claims_through_the_free_reciprocal_never_pass(method):
+    recs = _records(S84 / "own" / "reciprocal_tricks.py", "--method", method)
+    want = "undecided" if method == "free" else "fails"
+    assert {rec["verdict"] for rec in recs.values()} == {want}, [(k, r["message"][:80]) for k, r in recs.items()]
