@@ -194,6 +194,22 @@ def theta_is_a_poisson_map(s):
     return checks
 
 
+@claim("theta-reflection", paper=("right_action", "REDUCED_BRACKET"), kind="id",
+       statement=r"R=\mathrm{diag}(-1,1,\dots,1)\in O(r)\setminus SO(r):\quad \Theta(XR,PR)=\Theta(X,P),\quad "
+                 r"\Psi(XR,PR)=R\Psi R")
+def theta_is_invariant_under_a_reflection(s):
+    """Θ = Φ + XXᵀ is invariant under (X, P) ↦ (XR, PR) for the reflection R = diag(−1, 1, …, 1) ∈ O(r) ∖ SO(r), which maps Ψ to RΨR: the ℤ₂ of the covering θ of §6 is O(r)/SO(r), acting on (T*V)/SO(r) by this reflection; (X, P) ↦ (−X, −P) is R = −I_r, which lies in SO(r) when r is even."""
+    r = s.r
+    R = s.mat([[(s.q(-1) if i == 0 else s.q(1)) if i == j else s.q(0) for j in range(r)] for i in range(r)],
+              ("r", "r"))
+    XR, PR = s.X @ R, s.P @ R
+    return {
+        "R^T R - I": R.T @ R - s.Ir,
+        "Theta(XR, PR) - Theta(X, P)": Theta_at(XR, PR) - Theta(s),
+        "Psi(XR, PR) - R Psi R": XR.T @ PR - PR.T @ XR - R @ s.Psi @ R,
+    }
+
+
 def theta2_semidirect_bracket(s, a, b, mu_, Y):
     """{<Θ₂, a>, <Θ₂, b>} on (so(n) ⊕_ρ M_{n,r})* at (μ, Y) for Θ₂(μ, Y) = μ + YYᵀ: the Lie–Poisson
     bracket <μ, [α_a, α_b]> − tr(U_bᵀα_aY) + tr(U_aᵀα_bY) with the gradients α = skew(a) in so(n) and

@@ -1,4 +1,4 @@
-"""§6 The dimension lemmas: LEMA1, LEMA2 and the kernels, the isotropic tori (dim_fol, NEUMANN), each with a two-sided certificate."""
+"""§6 The dimension lemmas: LEMA1, LEMA2 and the kernels, the isotropic tori (dim_fol, NEUMANN), each with a two-sided certificate; and the rank of the pencil at λ₁ + λ₂ = 0."""
 from __future__ import annotations
 
 from stiefelsym import Count, Rank, admissible, claim, comm
@@ -299,6 +299,59 @@ def pencil_leaves_singular_corrected(s):
                                                          kernel=kernel_generic_lambda1(s, y)),
         "2l ≤ n² − n": Count(int(leaf_printed(n, r) <= generic_leaf_rank(n)), 1,
                                         "the leaves in Θ(T*V) are leaves of (gl(n), Λ₁) of rank at most n² − n"),
+    }
+
+
+# -- the pencil at λ1 + λ2 = 0 ---------------------------------------------------------------------------
+
+def so_rows(s, y, drop_sym_sym):
+    """The so(n) rows of :func:`form_matrix` at y (the bilinear form with a first argument in so(n))."""
+    basis, kinds = gl_basis(s)
+    k = s.n * (s.n - 1) // 2
+    return s.mat(form_matrix(s, y, kinds[:k], basis[:k], kinds, drop_sym_sym))
+
+
+def pencil_so_rows(s, l1, l2, x):
+    """The so(n) rows of Λ_{λ1,λ2}(x) = λ1Λ1(x) + λ2Λ2(x) (up to the factor −2 of :func:`form_matrix`)."""
+    return so_rows(s, x, True) * l1 + so_rows(s, x - s.A, False) * l2
+
+
+@claim("pencil-gl-isomorphism", paper=("central", "LAMBDA12"), kind="dim",
+       sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"), fails_at=lambda n, r: True,
+       place="the sentence before (4) §6",
+       erratum="""§6 says: “For λ₂ ≠ 0, the bracket Λ_{λ1,λ2} is isomorphic to the canonical Lie–Poisson
+       bracket on gl(n)”.  That bracket vanishes at 0, so Λ_{λ1,λ2} would vanish at some point x₀.  At
+       λ₁ + λ₂ = 0 it vanishes nowhere: the rows of Λ_{−1,1}(x) whose first argument lies in so(n) do not depend on x
+       (Λ_{λ1,λ2}(ξ, ·)|_x = (λ₁ + λ₂)⟨x, [ξ, ·]⟩ − λ₂⟨A, [ξ, ·]⟩ for ξ ∈ so(n)), and they have rank n(n − 1)/2
+       for distinct a_i, since ξ ↦ [A, ξ] is injective on so(n).  So Λ_{−λ₂,λ₂} has rank n² − n at every point
+       of gl(n), x = 0 included, and is not isomorphic to a Lie–Poisson bracket.  The number the witness
+       computes is the rank of those rows at x = 0, where the printed statement gives 0.  The Casimirs printed
+       next divide by λ₁ + λ₂, and the proof of Lemma 6.3 states the isomorphism “if λ₁ + λ₂ ≠ 0, λ₂ ≠ 0”:
+       with that condition Λ_{λ1,λ2} vanishes at x₀ = λ₂/(λ₁ + λ₂)·A, the image of 0 under the isomorphism
+       ψ(x) = ch + v − c²A, c² = λ₂/(λ₁ + λ₂), of the claim pencil-casimirs.""",
+       statement=r"\lambda_2\ne0\ \Rightarrow\ \Lambda_{\lambda_1,\lambda_2}\cong\text{the Lie--Poisson bracket of }"
+                 r"gl(n),\ \text{which vanishes at }0")
+def pencil_gl_isomorphism(s):
+    """The pencil bracket Λ_{λ1,λ2} with λ₂ ≠ 0 is isomorphic to the Lie–Poisson bracket of gl(n), so it vanishes at some point: at λ₁ = −λ₂ = −1 its so(n) rows do not depend on x, so they would vanish at x = 0."""
+    one = s.q(1)
+    x, zero = generic_gl(s), s.zeros(s.n, s.n, ("n", "n"))
+    at_0 = pencil_so_rows(s, -one, one, zero)
+    return {
+        "so(n) rows of Lambda_{-1,1}(x) - Lambda_{-1,1}(0)": pencil_so_rows(s, -one, one, x) - at_0,
+        "rank of the so(n) rows of Lambda_{-1,1}(0)": Rank(at_0, 0, meaning="0: Λ_{−1,1} vanishes at some point"),
+    }
+
+
+@pencil_gl_isomorphism.claim.correction("λ₁ + λ₂ ≠ 0 and λ₂ ≠ 0 in place of λ₂ ≠ 0")
+def pencil_gl_isomorphism_corrected(s):
+    # λ1 = σ(1 − c), λ2 = σc with σ = λ1 + λ2 ≠ 0 (the factor σ is left out): Λ vanishes at x0 = cA
+    c, one = s.scalar("c"), s.q(1)
+    x, x0 = generic_gl(s), s.A * c
+    return {
+        "so(n) rows of Lambda(x) - Lambda(x0) - <x - x0, [xi, .]>": (pencil_so_rows(s, one - c, c, x)
+                                                                     - pencil_so_rows(s, one - c, c, x0)
+                                                                     - so_rows(s, x - x0, False)),
+        "Lambda_{1-c,c} at x0 = cA": lambda1(s, x0) * (one - c) + lambda2(s, x0, s.A) * c,
     }
 
 

@@ -55,6 +55,13 @@ SLIPS: tuple[Slip, ...] = (
     Slip("5", "the paragraph on the Lax pairs of Moser and [RS], before the last paragraph of §5", "1111", "“flows on V_{n,2} in detail in Section 7 and Appendix 2”",
          "Appendix 1", "the magnetic flows on V_{n,2} are Appendix 1 (§9), as the introduction says; "
          "Appendix 2 holds the double, coupled and complex systems."),
+    Slip("6", "the paragraph on the map Θ in the proof of Theorem 6.1", "1203–1205, 1253",
+         "“invariant with respect to the right SO(r)-action (12) §2 and the transformation (X, P) ↦ (−X, −P)”, "
+         "then “The mapping Θ induces ℤ₂-Poisson covering θ: (T*V_{n,r})/SO(r) → Θ(T*V_{n,r})”",
+         "invariant under the right O(r)-action (X, P) ↦ (XQ, PQ), Q ∈ O(r); the ℤ₂ of θ is O(r)/SO(r)",
+         "(X, P) ↦ (−X, −P) is Q = −I_r, which lies in SO(r) when r is even, so there it acts trivially on "
+         "(T*V_{n,r})/SO(r) and does not give the ℤ₂ of the covering; a reflection R ∈ O(r) ∖ SO(r) does, for "
+         "every r: Θ(XR, PR) = Θ(X, P) while Ψ ↦ RΨR.", probable=True, claims=("theta-reflection",)),
     Slip("6", "the paragraph of (8) §6", "1296", "“see also Section 7”",
          "Appendix 1 (§9)", "§7 does not mention the Clebsch–Perelomov–Bogoyavlenski systems; §9 treats them "
          "in its paragraph on the symmetric Clebsch–Perelomov–Bogoyavlenski rigid bodies.", probable=True),

@@ -104,7 +104,7 @@ def _section6_dims(catalog):
     return [c for c in catalog if c.source.endswith("sec6_dimension_lemmas")]
 
 
-ERRATA = ("pencil-l5-l6", "pencil-leaves-singular")
+ERRATA = ("pencil-l5-l6", "pencil-leaves-singular", "pencil-gl-isomorphism")
 
 
 # Each corruption claims a rank below the true one: the sampled methods see a larger rank at a point,
@@ -162,6 +162,13 @@ def torus_one_larger(s):
     return {"rank": Rank(s.mat(rows), 2 * sec6.dim_V(n, r) - sec6.torus_twice_printed(n, r) // 2 - 1 + r * (r + 1))}
 
 
+def gl_isomorphism_wrong_point(s):
+    """Corrupted correction of the pencil's isomorphism: Λ_{1−c,c} taken to vanish at c²A (it vanishes at cA)."""
+    c = s.scalar("c")
+    x0 = s.A * (c * c)
+    return {"vanishes": sec6.lambda1(s, x0) * (s.q(1) - c) + sec6.lambda2(s, x0, s.A) * c}
+
+
 CORRUPTIONS = [
     ("pencil-leaf-dimension", leaf_dimension_minus_two, (3, 2)),
     ("pencil-leaves-singular", leaves_singular_with_more_casimirs, (3, 2)),
@@ -171,6 +178,7 @@ CORRUPTIONS = [
     ("pencil-l5-l6", l5_l6_corrected_off_by_one, (3, 2)),
     ("casimirs-complete-on-leaf", casimirs_one_short, (3, 2)),
     ("neumann-torus-dimension", torus_one_larger, (3, 2)),
+    ("pencil-gl-isomorphism", gl_isomorphism_wrong_point, (3, 2)),
 ]
 
 
