@@ -46,7 +46,11 @@ _NOT_VERDICT = ("cli", "cli_", "notebook", "pytest_plugin", "distributed", "_das
 #: third-party modules whose top-level attributes the backends call (every public one is watched by identity:
 #: numpy's ufuncs and array functions too), and Python's builtins
 _LIBRARIES = ("numpy", "flint", "symengine", "fractions", "operator", "math", "mpmath", "random", "hashlib",
-              "builtins")
+              "builtins", "json", "json.encoder", "json.decoder")
+#: classes of those libraries written in Python whose members a verdict reads (a graph's constants are sent as a
+#: Fraction's numerator and denominator, its data as JSON): each member is watched by identity too (stop 85's
+#: sweep: ``Fraction.denominator`` replaced at import, the class itself unchanged, sent 1/3 as 1/2)
+_LIBRARY_CLASSES = (("fractions", "Fraction"), ("json.encoder", "JSONEncoder"), ("json.decoder", "JSONDecoder"))
 #: submodules of the libraries the engine reaches through their package on first use (numpy loads them on
 #: first access): imported when sealing, so that a claims file cannot put its own module there first
 _LIBRARY_SUBMODULES = ("numpy.random", "numpy.linalg")
@@ -253,6 +257,9 @@ def _fingerprint(modules: list[str], objects: dict[str, Any] | None = None,
         if isinstance(reg, dict):
             for k, v in list(reg.items()):
                 h.update(f"{name}.{attr}[{k!r}]={id(v)}\n".encode())
+    for name, cls in _LIBRARY_CLASSES:
+        for k, w in list(vars(getattr(module(name), cls, object)).items()):
+            h.update(f"{name}.{cls}.{k}={id(w)}\n".encode())
     ops = getattr(getattr(module("stiefelsym.ir.evaluate"), "Evaluator", None), "_ops", {})
     for k, v in list(ops.items()):
         h.update(f"_ops[{k!r}]={id(v)}:{code_of(v)}\n".encode())

@@ -146,8 +146,17 @@ def _sockets() -> list[str]:
     return sorted(out)      # every one: a mask that cannot be mounted fails the setup (then the plain spawn, stated)
 
 
+#: the interpreter's isolation: -I (no PYTHON* variable, no user site, no script folder on the path), written as
+#: -s -P where Python has -P (3.11) so that PYTHONHASHSEED, the one PYTHON* variable of :func:`_environment`, is read:
+#: the hash of a string is then the same in every run, and a claim whose graph depends on it (on the order of a set of
+#: names) gives the same graph, digest and verdict each time (stop 85's sweep: a file that branched on hash() was
+#: refuted in one run and passed in the next, with the same --seed)
+_ISOLATED = ("-s", "-P") if sys.version_info >= (3, 11) else ("-I",)
+HASH_SEED = "0"
+
+
 def _environment() -> dict[str, str]:
-    return {"PATH": SYSTEM_PATH, "LC_ALL": "C.UTF-8", "HOME": "/tmp"}
+    return {"PATH": SYSTEM_PATH, "LC_ALL": "C.UTF-8", "HOME": "/tmp", "PYTHONHASHSEED": HASH_SEED}
 
 
 def run(config: dict[str, Any], capture: int, seconds: float, requests: bytes = b"",
@@ -234,7 +243,7 @@ def _spawn(config: dict[str, Any], capture: int, seconds: float, unshare: str | 
     """Spawn the interpreter (in namespaces when ``unshare`` is given): what it wrote, and its wait status
     (None: it ran out of time, or could not be started)."""
     from stiefelsym.run.confine import Confined
-    argv = [sys.executable, "-I", "-B", "-c", BOOT]
+    argv = [sys.executable, *_ISOLATED, "-B", "-c", BOOT]
     if unshare is not None:
         argv = [unshare, "--user", "--map-root-user", "--pid", "--fork", "--kill-child", "--mount",
                 "--mount-proc", "--net", "--ipc", "--propagation", "private"] + argv
@@ -640,6 +649,9 @@ def host() -> None:
         sys.stderr.write(f"stiefelsym: the engine was imported from {userfile.__file__}, not next to {__file__}\n")
         sys.stderr.flush()
         os._exit(4)
+    # this module runs here under another name (BOOT loads it from its file): the engine reads the confinement
+    # from the package's module (userfile: the IPC objects removed between jobs, a PID namespace per job)
+    importlib.import_module("stiefelsym.run.sandbox").CONFINED = confined
     if requests < 0:
         data = userfile._tracer(config["file"], None, float(config["timeout"]), config.get("memory"), send)
     else:       # each of its children writes its own answer

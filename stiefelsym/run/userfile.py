@@ -246,14 +246,16 @@ def _genuine(cls: type) -> bool:
     named so)."""
     from stiefelsym.ir import NotDeterministic, TraceRefused
     from stiefelsym.ir.replay import ReplayError
+    from stiefelsym.ir.seal import EngineChanged
     name = cls.__name__
     return cls is getattr(builtins, name, None) or cls in (TraceRefused, NotDeterministic, ReplayError, ClaimTimeout,
-                                                           NoGraph, EngineStateChanged)
+                                                           NoGraph, EngineStateChanged, EngineChanged)
 
 
 def _trace_one(func: Callable, realization: str, key: Any) -> Any:
     """The graph's state, or the refusal, of one function at one key (None: symbolic sizes)."""
     from stiefelsym.ir import Graph, _compile
+    from stiefelsym.ir.seal import verify
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[realization]
     constraints = (cons.name, cons.build)
@@ -273,6 +275,9 @@ def _trace_one(func: Callable, realization: str, key: Any) -> Any:
             g = _compile(func, key[0], key[1], constraints, cached=False)
         if memo_problems():
             raise EngineStateChanged(f"the tracer's memos were changed while the claim was traced: {memo_problems()[0]}")
+        # what encodes the graph and writes the answer (Fraction's members, json) as the engine sealed it: claim
+        # code ran in this process while it was traced
+        verify("tracing a claim of the file")
     except BaseException as exc:   # noqa: BLE001 - SystemExit, KeyboardInterrupt, anything: recorded
         return _refusal(exc)
     return _graph_state(g) if isinstance(g, Graph) else _refusal(g)
@@ -663,6 +668,7 @@ def _child(work: Callable[[int], None]) -> tuple[int, int]:
         os.close(rfd)
         code = 0
         try:
+            _alone_in_a_pid_namespace()
             work(wfd)
         except BaseException:   # noqa: BLE001 - the parent sees where it stopped
             code = 1
@@ -672,6 +678,48 @@ def _child(work: Callable[[int], None]) -> tuple[int, int]:
     os.close(wfd)
     gc.unfreeze()
     return pid, rfd
+
+
+#: unshare(2) flags: a user namespace (with all capabilities in it, so that the others need no privilege
+#: outside), a PID namespace for the children, a mount namespace, an IPC namespace
+CLONE_NEWUSER, CLONE_NEWPID, CLONE_NEWNS, CLONE_NEWIPC = 0x10000000, 0x20000000, 0x00020000, 0x08000000
+#: mount(2) flags of the job's own /proc (at least those of the /proc it hides: lock_down made it read-only)
+PROC_FLAGS = 1 | 2 | 4 | 8      # MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC
+
+
+def _alone_in_a_pid_namespace() -> None:
+    """In namespaces (:data:`stiefelsym.run.sandbox.CONFINED`), a job's child (this process, just forked, one
+    thread) becomes a small init: it enters new user, PID, mount and IPC namespaces, forks the process that does the
+    job, as process 1 of its PID namespace with a /proc of its own and no System V object of another job, and ends as that process ends (its exit status, or
+    the signal that ended it).  So every job sees the same process 1 (itself), the same process ids and no other
+    process in /proc: neither the tracing process (whose /proc/1/status counts the jobs it has waited for) nor the
+    process ids the jobs before it took (stop 85's sweep: one function under two ids read that count and was
+    refuted under the first, proved under the second).  Where a step fails the job runs in this process, as
+    without namespaces."""
+    from stiefelsym.run import sandbox
+    if not sandbox.CONFINED:
+        return
+    import ctypes
+    libc = ctypes.CDLL(None, use_errno=True)
+    _die_with_parent()
+    if libc.unshare(CLONE_NEWUSER | CLONE_NEWPID | CLONE_NEWNS | CLONE_NEWIPC) != 0:
+        return
+    job = os.fork()
+    if job == 0:
+        _die_with_parent()
+        if libc.mount(b"proc", b"/proc", b"proc", ctypes.c_ulong(PROC_FLAGS), None) != 0:
+            os._exit(1)         # no job in a namespace whose /proc still shows the tracing process
+        return
+    while True:
+        try:
+            _, status = os.waitpid(job, 0)
+            break
+        except InterruptedError:
+            continue
+    if os.WIFSIGNALED(status):
+        signal.signal(os.WTERMSIG(status), signal.SIG_DFL)
+        os.kill(os.getpid(), os.WTERMSIG(status))
+    os._exit(os.WEXITSTATUS(status) if os.WIFEXITED(status) else 1)
 
 
 def _listed(path: str) -> dict:

@@ -1,0 +1,95 @@
+"""Stop 85's replays: the sweep of issue 20's classes (h1) and the stop's own attempts, each kept as a test.
+
+- h1 I1 (class 4, state across jobs): a job of a claims file is a child of the tracing process; its process id (3,
+  5, 7, 12, ...) and the tracing process's context switches, read in /proc/1/status, grew with every job.  One
+  function registered under two ids was refuted under the first and proved under the second.  Each job is now
+  process 1 of a PID namespace of its own, with a /proc of its own (userfile._alone_in_a_pid_namespace).
+- own (class 4): a System V shared memory segment made under a fixed key counted the jobs the same way.  The
+  interpreter's IPC objects are removed between jobs, but that removal read a flag the interpreter never set
+  (it runs the sandbox module under another name); it is set now, and each job has an IPC namespace of its own.
+- h1 I2 (class 7): ``Fraction.denominator`` replaced at import (the class itself unchanged, the seal watching the
+  fractions module's attributes by identity) sent the constant 1/3 as 1/2: X/3 − X/2 = 0 proved under every method.
+  The seal watches the members of Fraction and of json's encoder and decoder, and json itself; a replacement
+  made while a claim is traced is seen before its graph is encoded (own: json.dumps replaced in a claim).
+- h1 M1: the interpreter's string-hash seed was random per run: a file that branched on hash() was refuted in
+  one run and passed in the next with the same --seed.  The interpreter now runs with PYTHONHASHSEED=0 (Python
+  3.11 and later, where -I can be written -s -P).
+"""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+S85 = Path(__file__).parent / "s85"
+
+
+def _namespaces() -> bool:
+    from stiefelsym.run.sandbox import namespaces_available
+    return namespaces_available()
+
+
+NAMESPACES = pytest.mark.skipif(not _namespaces(), reason="no user + pid + mount namespaces here: the jobs are "
+                                "ordinary children of the tracing process (the records say so)")
+
+
+def _run(path: Path, *args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
+                           "--format", "json", *args], capture_output=True, text=True, timeout=600)
+
+
+def _records(path: Path, *args: str) -> dict:
+    out = _run(path, *args)
+    assert out.stdout.strip(), out.stderr[-2000:]
+    return {(r["claim"], r.get("variant"), r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
+
+
+def _verdicts(path: Path, *args: str) -> dict:
+    return {key[0]: rec["verdict"] for key, rec in _records(path, *args).items()}
+
+
+@NAMESPACES
+@pytest.mark.parametrize("method", ["exact", "modular"])
+def test_every_job_is_process_1_alone_in_its_namespace(method):
+    assert set(_verdicts(S85 / "own" / "job_alone.py", "--size", "3,1", "--method", method).values()) \
+        == {"proved" if method == "exact" else "checked"}
+
+
+@NAMESPACES
+@pytest.mark.parametrize("name, first, second", [("c4_status_count.py", "st-first", "st-second"),
+                                                 ("c4_status_switches.py", "sw-first", "sw-second")])
+def test_one_function_under_two_ids_gets_one_verdict(name, first, second):
+    for method in ("exact", "modular", "free"):
+        v = _verdicts(S85 / "h1" / name, "--size", "3,1", "--method", method)
+        assert v[first] == v[second], (method, v)
+        assert v[first] in ("fails", "undecided"), (method, v)      # XXᵀ − I_n: false at r < n
+
+
+@NAMESPACES
+def test_system_v_objects_do_not_count_the_jobs():
+    for method in ("exact", "modular"):
+        v = _verdicts(S85 / "own" / "sysv_count.py", "--size", "3,1", "--method", method)
+        assert v == {"shm-first": "fails", "shm-second": "fails"}, (method, v)
+
+
+def test_a_patched_fraction_class_is_refused():
+    out = _run(S85 / "h1" / "c7_fraction_patch.py", "--size", "3,2", "--method", "exact")
+    assert out.returncode == 2, out.stdout[-500:]
+    assert "the engine was changed by claim code" in out.stderr
+
+
+def test_json_replaced_while_a_claim_is_traced_is_seen():
+    recs = _records(S85 / "own" / "json_patch_in_trace.py", "--size", "3,2", "--method", "exact")
+    (rec,) = recs.values()
+    assert rec["verdict"] == "error" and "EngineChanged" in rec["message"], rec["message"]
+
+
+@pytest.mark.skipif(sys.version_info < (3, 11), reason="-I cannot be written -s -P before Python 3.11: the "
+                    "interpreter's hash seed stays random there")
+def test_the_hash_seed_is_the_same_in_every_run():
+    runs = [_records(S85 / "h1" / "c4_hashseed.py", "--size", "3,1", "--method", "exact") for _ in range(3)]
+    assert len({json.dumps([(k[0], rec["verdict"], rec.get("digest")) for k, rec in sorted(r.items())])
+                for r in runs}) == 1
