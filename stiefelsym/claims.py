@@ -515,6 +515,12 @@ def _size_spec(cid: str, sizes: Any) -> SizeSpec:
     if sizes is None:
         return admissible()
     if isinstance(sizes, SizeSpec):
+        # the sizes a run takes by default must be sizes the statement is about (stop 85's sweep M2: a spec
+        # rebuilt with dataclasses.replace kept sizes its new fields exclude, and was run there)
+        outside = [f"({s.n},{s.r})" for s in sizes.sizes if not sizes.admits(s.n, s.r)]
+        if outside:
+            raise ValueError(f"claim {cid}: its sizes list {', '.join(outside)}, which its own statement of sizes "
+                             f"({sizes.describe()}) excludes")
         return sizes
     try:
         pairs = [(s.n, s.r) if isinstance(s, Size) else tuple(s) for s in sizes]

@@ -1,8 +1,8 @@
 """A fresh, confined interpreter for a user's claims file.
 
 :func:`stiefelsym.run.userfile.load_claims_isolated` never lets a claims file run in a process that knows the
-run: :func:`run` *spawns* (never forks) ``python -I -B -c BOOT`` with a neutral argv, a minimal environment
-(no ``STIEFELSYM_*``, no user variable), its standard input carrying only what the phase needs (the file's
+run: :func:`run` *spawns* (never forks) ``python -I -B -c BOOT`` (``-s -P`` for ``-I`` from Python 3.11) with a neutral argv, a minimal environment
+(a fixed hash seed, no ``STIEFELSYM_*``, no user variable), its standard input carrying only what the phase needs (the file's
 path, the search path of the package, the engine's tracing budgets (never the run's), and in the second
 phase one size per line on descriptor 3, each read by a process of its own), and its standard output
 carrying the answer.  So the process that imports the file holds no

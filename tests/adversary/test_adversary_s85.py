@@ -93,3 +93,10 @@ def test_the_hash_seed_is_the_same_in_every_run():
     runs = [_records(S85 / "h1" / "c4_hashseed.py", "--size", "3,1", "--method", "exact") for _ in range(3)]
     assert len({json.dumps([(k[0], rec["verdict"], rec.get("digest")) for k, rec in sorted(r.items())])
                 for r in runs}) == 1
+
+
+def test_sizes_outside_their_own_statement_are_refused():
+    """h1 M2: a statement of sizes rebuilt with dataclasses.replace (or a subclass, or a field set on the frozen
+    object) kept listed sizes that its fields exclude, and the default run verified the claim there."""
+    out = _run(S85 / "h1" / "f8_lying_specs.py", "--method", "exact")
+    assert out.returncode == 2 and "which its own statement of sizes (r = n) excludes" in out.stderr, out.stderr[-800:]
