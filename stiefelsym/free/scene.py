@@ -1980,7 +1980,8 @@ class FreePointScene:
     def lift(self, v: Any) -> Any:
         """A value of the generic point, evaluated at the point."""
         if isinstance(v, Flow):
-            out = Flow(self.lift(v.Xdot), self.lift(v.Pdot))
+            # the multipliers of s.multiplier_flow(H) too: functions of the point, evaluated there as every value
+            out = Flow(self.lift(v.Xdot), self.lift(v.Pdot), multipliers=self.lift(dict(v.multipliers)))
             self._flows[id(out)] = (out, v)
             return out
         if isinstance(v, Mat):

@@ -11,6 +11,9 @@
   fractions module's attributes by identity) sent the constant 1/3 as 1/2: X/3 − X/2 = 0 proved under every method.
   The seal watches the members of Fraction and of json's encoder and decoder, and json itself; a replacement
   made while a claim is traced is seen before its graph is encoded (own: json.dumps replaced in a claim).
+- h2 M1: under the free method, the multipliers of ``multiplier_flow`` at a point of the claim's own
+  (``twisted.at_point``) were lost when the flow was evaluated at the point: a KeyError, an `error` for a true
+  statement that exact proves.  The point's flow keeps them now, evaluated there like its components.
 - h1 M1: the interpreter's string-hash seed was random per run: a file that branched on hash() was refuted in
   one run and passed in the next with the same --seed.  The interpreter now runs with PYTHONHASHSEED=0 (Python
   3.11 and later, where -I can be written -s -P).
@@ -100,3 +103,15 @@ def test_sizes_outside_their_own_statement_are_refused():
     object) kept listed sizes that its fields exclude, and the default run verified the claim there."""
     out = _run(S85 / "h1" / "f8_lying_specs.py", "--method", "exact")
     assert out.returncode == 2 and "which its own statement of sizes (r = n) excludes" in out.stderr, out.stderr[-800:]
+
+
+def test_multipliers_at_a_point_of_the_claims_own_under_free():
+    v = _verdicts(S85 / "h2" / "h2_probe_atpoint.py", "--method", "free")
+    assert v == {"p2-atpoint-multipliers": "proved", "p2-atpoint-multipliers-twin": "undecided",
+                 "p2-own-multipliers": "proved"}, v
+    for method in ("exact", "modular"):
+        recs = _records(S85 / "h2" / "h2_probe_atpoint.py", "--method", method, "--size", "3,2")
+        assert {k[0]: r["verdict"] for k, r in recs.items()} == {
+            "p2-atpoint-multipliers": "proved" if method == "exact" else "checked",
+            "p2-atpoint-multipliers-twin": "fails",
+            "p2-own-multipliers": "proved" if method == "exact" else "checked"}
