@@ -103,16 +103,30 @@ class FreeSize:
     def __mul__(self, c: Any) -> "FreeSize":
         if isinstance(c, int) and not isinstance(c, bool) and c >= 1:
             return FreeSize(self.kind, self.k * c, self._tracker)
-        raise refuse(f"the size {self} in arithmetic", self._tracker)
+        return self._arithmetic()
 
     __rmul__ = __mul__
+
+    def _as_scalar(self) -> str:
+        """The way to write the size as a scalar of the claim, which the free algebra holds: a trace."""
+        return f"{self.k if self.k > 1 else ''}s.tr(s.I{self.kind})"
+
+    def _arithmetic(self, *args: Any) -> Any:
+        raise refuse(f"the size {self} in arithmetic (as a scalar of the claim it is {self._as_scalar()})",
+                     self._tracker)
+
+    def _number(self, *args: Any) -> Any:
+        raise refuse(f"using the size {self} as a number (as a loop bound or an index it needs fixed sizes; as a "
+                     f"scalar of the claim it is {self._as_scalar()})", self._tracker)
 
     def _refuse(self, *args: Any) -> Any:
         raise refuse(f"using the size {self} as a number", self._tracker)
 
     __eq__ = __ne__ = __lt__ = __le__ = __gt__ = __ge__ = _refuse
-    __add__ = __radd__ = __sub__ = __rsub__ = __truediv__ = __floordiv__ = __rfloordiv__ = _refuse
-    __mod__ = __pow__ = __neg__ = __int__ = __index__ = __float__ = __bool__ = _refuse
+    __add__ = __radd__ = __sub__ = __rsub__ = __truediv__ = __pow__ = _arithmetic
+    __int__ = __index__ = __float__ = _number
+    __neg__ = _arithmetic
+    __floordiv__ = __rfloordiv__ = __mod__ = __bool__ = _refuse
     __hash__ = object.__hash__
 
     def __repr__(self) -> str:

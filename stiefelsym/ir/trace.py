@@ -170,7 +170,7 @@ class Dim:
         if type(c) is int and c > 0:
             s = self._expr
             return Dim(Size(s.k * c, s.d, None), self._owner)
-        return self._int() * (c._int() if type(c) is Dim else c)
+        return self._int("as a number" if type(c) in (int, Dim) else AS_SCALAR) * (c._int() if type(c) is Dim else c)
 
     __rmul__ = __mul__
 
@@ -181,9 +181,18 @@ class Dim:
         return hash(self._int("as a key"))
 
 
+#: the use named when a size meets a value of the claim in arithmetic: with symbolic sizes the way to write it
+AS_SCALAR = ("in arithmetic with a value of the claim (the size as a scalar of the claim: s.tr(s.Ir) = r, "
+             "s.tr(s.In) = n)")
+#: the operations of a size that are arithmetic (the others read it as an int, a key, a text, a truth value)
+_ARITHMETIC = frozenset({"__add__", "__radd__", "__sub__", "__rsub__", "__truediv__", "__rtruediv__", "__pow__",
+                         "__rpow__"})
+
+
 def _dim_op(name: str):
     def op(self, *args):
-        v = self._int()
+        value = bool(args) and not all(type(a) in (int, Dim) for a in args)
+        v = self._int(AS_SCALAR if value and name in _ARITHMETIC else "as a number")
         return getattr(v, name)(*[a._int() if type(a) is Dim else a for a in args])
     op.__name__ = name
     return op
