@@ -223,3 +223,17 @@ def test_ball_evaluation_bounds_a_true_claim_and_not_a_corrupted_one(catalog):
     assert rec["max_bound"] <= sp.evaluate(c, 8, 2)["max_bound"]
     bad = sp.evaluate_ball(sp.control_claim(), 8, 2)
     assert bad["status"] == "bad" and not bad["resolved"]
+
+
+def test_the_cost_model_reads_the_seconds_from_the_run_log_beside_results(tmp_path):
+    """A committed results.json leaves the timings out; `stiefelsym speed` takes them from the run log of the
+    same run (run-log.json, not committed), record by record, and only where it lists the same runs."""
+    from stiefelsym.cli.speed import timed
+    records = [{"claim": "LA1", "n": 3, "r": 1, "method": "exact", "variant": None},
+               {"claim": "LA1", "n": 3, "r": 2, "method": "exact", "variant": None, "seconds": 0.5}]
+    log = tmp_path / "run-log.json"
+    assert timed(records, log) == records                               # no log: as they are
+    log.write_text(json.dumps({"seconds": [["LA1", 3, 1, "exact", None, 0.25], ["LA1", 3, 2, "exact", None, 9.0]]}))
+    assert [r.get("seconds") for r in timed(records, log)] == [0.25, 0.5]  # a record's own seconds are kept
+    log.write_text(json.dumps({"seconds": [["LA1", 3, 2, "exact", None, 0.25], ["LA1", 3, 1, "exact", None, 9.0]]}))
+    assert timed(records, log) == records                               # another run's log: not read

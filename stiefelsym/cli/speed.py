@@ -170,6 +170,19 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
     return 1 if bad or doc["hard_wrong"] else 0
 
 
+def timed(records: list[dict[str, Any]], run_log: Path) -> list[dict[str, Any]]:
+    """The records of a committed results.json (which leaves the timings out) with their seconds from the run
+    log of the same run beside it (run-log.json, not committed), where it is there and lists the same runs."""
+    try:
+        seconds = json.loads(run_log.read_text(encoding="utf-8"))["seconds"]
+    except (OSError, ValueError, KeyError):
+        return records
+    if len(seconds) != len(records) or any([r.get(k) for k in ("claim", "n", "r", "method", "variant")] != s[:5]
+                                           for r, s in zip(records, seconds)):
+        return records
+    return [dict(r, seconds=s[5]) if r.get("seconds") is None else r for r, s in zip(records, seconds)]
+
+
 def _cost_model(report_dir: Path, quick: bool, seed: int, registry: Any, say: Any, model_file: Path | None,
                 records_file: Path | None, cap: float | None,
                 remeasure: tuple[str, ...] = ()) -> tuple[dict[str, Any], list[dict[str, Any]]]:
@@ -209,7 +222,7 @@ def _cost_model(report_dir: Path, quick: bool, seed: int, registry: Any, say: An
     calibration = []
     for f in (Path("reports") / "all" / "results.json", Path("reports") / "results.json"):
         try:
-            calibration += json.loads(f.read_text(encoding="utf-8"))["results"]
+            calibration += timed(json.loads(f.read_text(encoding="utf-8"))["results"], f.with_name("run-log.json"))
         except (OSError, ValueError, KeyError):
             pass
     costmodel.calibrate(cm_doc, calibration)
