@@ -46,7 +46,7 @@ _NOT_VERDICT = ("cli", "cli_", "notebook", "pytest_plugin", "distributed", "_das
 #: third-party modules whose top-level attributes the backends call (every public one is watched by identity:
 #: numpy's ufuncs and array functions too), and Python's builtins
 _LIBRARIES = ("numpy", "flint", "symengine", "fractions", "operator", "math", "mpmath", "random", "hashlib",
-              "builtins", "json", "json.encoder", "json.decoder")
+              "builtins", "json", "json.encoder", "json.decoder", "os", "posix")
 #: classes of those libraries written in Python whose members a verdict reads (a graph's constants are sent as a
 #: Fraction's numerator and denominator, its data as JSON): each member is watched by identity too (stop 85's
 #: sweep: ``Fraction.denominator`` replaced at import, the class itself unchanged, sent 1/3 as 1/2)
@@ -260,6 +260,10 @@ def _fingerprint(modules: list[str], objects: dict[str, Any] | None = None,
     for name, cls in _LIBRARY_CLASSES:
         for k, w in list(vars(getattr(module(name), cls, object)).items()):
             h.update(f"{name}.{cls}.{k}={id(w)}\n".encode())
+    # the encoder json.dumps uses (an instance: a method set on it is no change of its class; stop 85's h4)
+    encoder = getattr(module("json"), "_default_encoder", None)
+    h.update(f"json._default_encoder={id(encoder)}:{sorted((k, id(w)) for k, w in vars(encoder).items())}\n".encode()
+             if encoder is not None else b"")
     ops = getattr(getattr(module("stiefelsym.ir.evaluate"), "Evaluator", None), "_ops", {})
     for k, v in list(ops.items()):
         h.update(f"_ops[{k!r}]={id(v)}:{code_of(v)}\n".encode())

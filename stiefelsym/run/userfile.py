@@ -480,18 +480,18 @@ def _run_claim(path: str, ids: list, cid: str, more: dict | None, timeout: float
     i = 0
     while i < len(jobs):
         with _Between():     # a process the child left ends with it (the next job sees none)
-            pid, rfd = _child(lambda wfd: _jobs_lines(path, ids, cid, more, jobs, i, memory, wfd))
-            buf = b""
+            pid, rfd, buf = _child({"do": "job", "path": path, "ids": ids, "cid": cid, "more": more, "job": jobs[i],
+                                    "memory": memory})
             timed_out = done = False
             # the job's own import first, under its deadline; then the job's budget
             deadline, imported = time.monotonic() + IMPORT_BUDGET, False
             try:
                 while i < len(jobs) and not done:
-                    chunk = next_chunk(rfd, deadline)
+                    chunk = next_chunk(rfd, deadline) if b"\n" not in buf else b""
                     if chunk is None:
                         timed_out = True
                         break
-                    if not chunk:
+                    if not chunk and b"\n" not in buf:
                         break
                     buf += chunk
                     while b"\n" in buf and not done:
@@ -504,6 +504,7 @@ def _run_claim(path: str, ids: list, cid: str, more: dict | None, timeout: float
                             continue
                         item = _job_line(line, "meta" if jobs[i][0] == "meta" else "job")
                         if item is None:    # not the job's line: something the file's code wrote on the pipe
+                            _forward(line)
                             continue
                         done = True         # the child's one line: its job is done
                         _beat()
@@ -519,8 +520,7 @@ def _run_claim(path: str, ids: list, cid: str, more: dict | None, timeout: float
                             results.append([f, None if key is None else list(key), item["job"]])
                         i = _next_job(jobs, i + 1, has_free)
             finally:
-                os.close(rfd)
-                _kill(pid, wait=not timed_out and i >= 0)
+                _end(pid, rfd, buf, wait=not timed_out and i >= 0)
         _beat()         # the job that ran out of time or died has ended too
         if done:
             continue    # the next job, in a grandchild of its own
@@ -558,27 +558,35 @@ def _status_text(pid: int) -> str:
     return _STATUS.pop(pid, "the process vanished")
 
 
-def _kill(pid: int, wait: bool = False) -> None:
-    """Kill and reap a child (``wait``: one that ended or is ending, waited for a moment first); its wait
-    status is kept for :func:`_status_text`."""
+def _end(pid: int, rfd: int, buf: bytes, wait: bool) -> None:
+    """A job's end: its pipe read to its end (``wait``: for a moment, the job having answered; else not at all),
+    what the file printed there passed on, and the job's wait status, which its starter writes last, kept for
+    :func:`_status_text`; a starter that has not written it by then is killed (and with it the job)."""
+    status = None
     try:
-        done, status = os.waitpid(pid, os.WNOHANG)
-        for _ in range(200 if wait and done == 0 else 0):
-            time.sleep(0.005)
-            done, status = os.waitpid(pid, os.WNOHANG)
-            if done:
+        deadline = time.monotonic() + (1.0 if wait else 0.0)
+        while wait:
+            chunk = next_chunk(rfd, deadline)
+            if not chunk:
                 break
-        if done == 0:
+            buf += chunk
+        for line in buf.split(b"\n"):
+            if line.startswith(STATUS_MARK) and line[len(STATUS_MARK):].isdigit():
+                status = int(line[len(STATUS_MARK):])
+            elif line:
+                _forward(line)
+    finally:
+        os.close(rfd)
+    if status is None:
+        try:
             os.kill(pid, signal.SIGKILL)
-            done, status = os.waitpid(pid, 0)
-            _STATUS[pid] = "killed"
-            return
-        if os.WIFSIGNALED(status):
-            _STATUS[pid] = f"killed by {signal.Signals(os.WTERMSIG(status)).name}"
-        else:
-            _STATUS[pid] = f"exited with status {os.WEXITSTATUS(status)}"
-    except (ProcessLookupError, ChildProcessError, ValueError):
-        pass
+        except OSError:
+            pass
+        _STATUS[pid] = "killed"
+    elif os.WIFSIGNALED(status):
+        _STATUS[pid] = f"killed by {signal.Signals(os.WTERMSIG(status)).name}"
+    else:
+        _STATUS[pid] = f"exited with status {os.WEXITSTATUS(status)}"
 
 
 def _import_bounded(path: str) -> Registry:
@@ -617,7 +625,8 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
             mark: Callable[[bytes], None]) -> bytes:
     """The spawned interpreter's work (:func:`stiefelsym.run.sandbox.host`): the file's claims, listed by an import
     in a child of its own, then each claim traced job by job, each job in a child that imports the file itself
-    (:func:`_run_claim`): this process never imports the file, so that nothing the file's code leaves in a process
+    (:func:`_run_claim`), forked from the zygote (:class:`_Zygote`), never from this process, which holds the
+    answers: this process never imports the file, so that nothing the file's code leaves in a process
     (module state, hooks run at each fork, shared memory, descriptors) reaches a job from another.  ``more`` (the
     second phase): claim id -> what :func:`_claim_more` needs, and only those claims.  ``mark`` writes a line the
     verifying process waits for: :data:`stiefelsym.run.sandbox.IMPORTED` when the first import has ended,
@@ -635,15 +644,16 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
     except OSError:
         pass
     import_engine()                     # once, before the forks: each child imports the file itself
+    # the engine's fingerprint, taken once here rather than in every job's child: each child has it before it
+    # imports the file and checks the engine against it after (nothing of the file has run in this process)
+    seal()
+    _ZYGOTE[:] = [_Zygote()]            # every job's process is forked from it (before any job has answered)
     listed = _listed(path)
     if "error" in listed:
         return json.dumps({"error": listed["error"]}).encode()
     ids = listed["ids"]
     mark(IMPORTED)
     _BEAT = lambda: mark(BEAT)     # noqa: E731
-    # the engine's fingerprint, taken once here rather than in every job's child: each child has it before it
-    # imports the file and checks the engine against it after (nothing of the file has run in this process)
-    seal()
     parts = []
     for cid in ids:
         if more is not None and cid not in more:
@@ -658,26 +668,122 @@ def _tracer(path: str, more: dict | None, timeout: float, memory: int | None,
     return b'{"claims": [' + b",".join(parts) + b"]}"
 
 
-def _child(work: Callable[[int], None]) -> tuple[int, int]:
-    """A forked child that runs ``work(wfd)`` (it writes its answer on the pipe ``wfd``) and exits (status 1 when
-    work raised: the parent sees no answer); its pid, and the pipe's end to read."""
-    rfd, wfd = os.pipe()
-    gc.freeze()
-    pid = os.fork()
-    if pid == 0:
-        os.close(rfd)
-        code = 0
+class _Zygote:
+    """The process every job of a claims file is forked from (stop 85's second sweep): a child of the tracing process,
+    forked before the first job, that never holds what a job answered, nor a job's request, process id or wait
+    status.  The tracing process keeps the answers (the claims traced so far, each job's status): a job forked from
+    it found them on its stack and in freed memory (W1), and the second phase's loop held the previous size's
+    child (W2).  For each job the tracing process makes two fresh pipes (the request, the answer), hands the job's
+    ends over a Unix socket (SCM_RIGHTS) and writes one byte to the zygote, which forks (:func:`_zygote`); the child
+    takes the pipes itself, and the job reads its own request.  So every job starts from the same memory, with the
+    same descriptors, none of which another job wrote to (standard output and error are its answer pipe; the
+    tracing process passes what the file prints on to the capture)."""
+
+    def __init__(self) -> None:
+        import socket
+        ctl_r, self.ctl_w = os.pipe()
+        self.sock, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_DGRAM)
+        _flush()
+        pid = os.fork()
+        if pid == 0:
+            try:
+                self.sock.close()
+                os.close(self.ctl_w)
+                _zygote(ctl_r, theirs.detach())
+            finally:
+                os._exit(0)
+        self.pid = pid
+        os.close(ctl_r)
+        theirs.close()
+
+    def alive(self) -> bool:
         try:
-            _alone_in_a_pid_namespace()
-            work(wfd)
-        except BaseException:   # noqa: BLE001 - the parent sees where it stopped
-            code = 1
+            return os.waitpid(self.pid, os.WNOHANG) == (0, 0)
+        except ChildProcessError:
+            return False
+
+    def child(self, spec: dict) -> tuple[int, int, bytes]:
+        """A job in a child of the zygote: the pid of its starter (:func:`_starter`), the answer pipe's end to
+        read, and what was read past the pid's line."""
+        import socket
+        req_r, req_w = os.pipe()
+        ans_r, ans_w = os.pipe()
+        try:
+            socket.send_fds(self.sock, [b"j"], [req_r, ans_w])
+            os.write(self.ctl_w, b"j")
         finally:
-            _flush()
-            os._exit(code)
-    os.close(wfd)
-    gc.unfreeze()
-    return pid, rfd
+            os.close(req_r)
+            os.close(ans_w)
+        try:
+            write_fully(req_w, json.dumps(spec).encode() + b"\n")
+        except OSError:
+            pass            # the job ended before it read its request: the answer pipe says so
+        finally:
+            os.close(req_w)
+        buf, deadline = b"", time.monotonic() + IMPORT_BUDGET
+        while b"\n" not in buf:
+            chunk = next_chunk(ans_r, deadline)
+            if not chunk:
+                os.close(ans_r)
+                raise ValueError("a job's process did not start")
+            buf += chunk
+        line, rest = buf.split(b"\n", 1)
+        if not line.startswith(PID_MARK):
+            os.close(ans_r)
+            raise ValueError("a job's process did not start")
+        return int(line[len(PID_MARK):]), ans_r, rest
+
+
+#: the first line of a job's answer pipe (written by its starter, before anything of the file runs) and the last
+#: (after the job's process ended): its starter's pid, and the job's wait status
+PID_MARK, STATUS_MARK = b"\x00pid ", b"\x00status "
+
+_ZYGOTE: list = []
+
+
+def _child(spec: dict) -> tuple[int, int, bytes]:
+    """A job (``spec``: what :func:`_job_main` does) in a child of this tracing process's zygote (made here when there
+    is none alive: the tracing process makes it before its first job, a process that calls a job directly, such as
+    the tests, when it needs one)."""
+    if not (_ZYGOTE and _ZYGOTE[-1].alive()):
+        _ZYGOTE[:] = [_Zygote()]
+    return _ZYGOTE[-1].child(spec)
+
+
+def _zygote(ctl: int, sock: int) -> None:
+    """The zygote's loop: one byte, one fork, until the tracing process ends.  Its memory is the same before every
+    fork: the fork is libc's (no Python int of a child's pid is made here), the children are reaped by the kernel
+    (SIGCHLD ignored: no wait status is read here), and the request and the pipes are taken by the child."""
+    import ctypes
+    _die_with_parent()
+    _close_all_but({0, 1, 2, ctl, sock})
+    fork = ctypes.PyDLL(None).fork
+    fork.restype, fork.argtypes = None, []
+    me = os.getpid()
+    signal.signal(signal.SIGCHLD, signal.SIG_IGN)
+    gc.freeze()         # (the children's collections then leave the pages they share with this process alone)
+    while os.read(ctl, 1):
+        fork()
+        if os.getpid() != me:
+            signal.signal(signal.SIGCHLD, signal.SIG_DFL)
+            code = 1
+            try:
+                code = _starter(ctl, sock)
+            finally:
+                os._exit(code)
+
+
+def _close_all_but(keep: set[int]) -> None:
+    try:
+        fds = [int(x) for x in os.listdir("/proc/self/fd")]
+    except OSError:
+        fds = list(range(1 << 12))
+    for fd in fds:
+        if fd not in keep:
+            try:
+                os.close(fd)
+            except OSError:
+                pass
 
 
 #: unshare(2) flags: a user namespace (with all capabilities in it, so that the others need no privilege
@@ -687,69 +793,114 @@ CLONE_NEWUSER, CLONE_NEWPID, CLONE_NEWNS, CLONE_NEWIPC = 0x10000000, 0x20000000,
 PROC_FLAGS = 1 | 2 | 4 | 8      # MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC
 
 
-def _alone_in_a_pid_namespace() -> None:
-    """In namespaces (:data:`stiefelsym.run.sandbox.CONFINED`), a job's child (this process, just forked, one
-    thread) becomes a small init: it enters new user, PID, mount and IPC namespaces, forks the process that does the
-    job, as process 1 of its PID namespace with a /proc of its own and no System V object of another job, and ends as that process ends (its exit status, or
-    the signal that ended it).  So every job sees the same process 1 (itself), the same process ids and no other
-    process in /proc: neither the tracing process (whose /proc/1/status counts the jobs it has waited for) nor the
-    process ids the jobs before it took (stop 85's sweep: one function under two ids read that count and was
-    refuted under the first, proved under the second).  Where a step fails the job runs in this process, as
-    without namespaces."""
-    from stiefelsym.run import sandbox
-    if not sandbox.CONFINED:
-        return
+def _starter(ctl: int, sock: int) -> int:
+    """A child of the zygote: it takes the job's pipes, writes its pid on the answer pipe, and forks the process that
+    does the job.  In namespaces (:data:`stiefelsym.run.sandbox.CONFINED`) it enters new user, PID, mount and IPC
+    namespaces first, so that the job is process 1 of a PID namespace of its own, with a /proc of its own and no
+    System V object of another job: every job sees the same process ids and no other process, neither the tracing
+    process (whose /proc/1/status counted the jobs it had waited for) nor the pids the jobs before it took (stop
+    85's sweep: one function under two ids read that count).  It writes the job's wait status last, once the job's
+    process (and, in its namespace, every process the job started) has ended; this process runs nothing of the
+    file."""
     import ctypes
-    libc = ctypes.CDLL(None, use_errno=True)
+    import socket
+    from stiefelsym.run import sandbox
+    from stiefelsym.run.confine import Confined
     _die_with_parent()
-    if libc.unshare(CLONE_NEWUSER | CLONE_NEWPID | CLONE_NEWNS | CLONE_NEWIPC) != 0:
+    s = socket.socket(fileno=sock)
+    _, fds, _, _ = socket.recv_fds(s, 1, 2)
+    s.close()
+    os.close(ctl)
+    if len(fds) != 2:
+        return 1
+    req, ans = fds
+    write_fully(ans, PID_MARK + str(os.getpid()).encode() + b"\n")
+    libc = ctypes.CDLL(None, use_errno=True)
+    alone = sandbox.CONFINED and libc.unshare(CLONE_NEWUSER | CLONE_NEWPID | CLONE_NEWNS | CLONE_NEWIPC) == 0
+    with Confined():        # (without namespaces: what the job leaves is ended here)
+        job = os.fork()
+        if job == 0:
+            code = 1
+            try:
+                _die_with_parent()
+                if alone and libc.mount(b"proc", b"/proc", b"proc", ctypes.c_ulong(PROC_FLAGS), None) != 0:
+                    os._exit(1)         # no job in a namespace whose /proc still shows the tracing process
+                os.dup2(ans, 1)
+                os.dup2(ans, 2)
+                line = b""
+                while not line.endswith(b"\n"):
+                    chunk = os.read(req, 1 << 16)
+                    if not chunk:
+                        break
+                    line += chunk
+                os.close(req)
+                _job_main(json.loads(line), ans)
+                code = 0
+            finally:
+                _flush()
+                os._exit(code)
+        os.close(req)
+        while True:
+            try:
+                _, status = os.waitpid(job, 0)
+                break
+            except InterruptedError:
+                continue
+    write_fully(ans, b"\n" + STATUS_MARK + str(status).encode() + b"\n")
+    return 0
+
+
+def _job_main(spec: dict, wfd: int) -> None:
+    """A job, in the process :func:`_starter` forked: the listing of the file's claims, or one job of a claim."""
+    if spec["do"] == "list":
+        _listing(spec["path"], wfd)
+    else:
+        _jobs_lines(spec["path"], spec["ids"], spec["cid"], spec["more"], [spec["job"]], 0, spec["memory"], wfd)
+
+
+def _listing(path: str, wfd: int) -> None:
+    _die_with_parent()
+    try:
+        out: dict = {"ids": [c.id for c in _import_bounded(path)]}
+    except CatalogError as exc:
+        out = {"failed": str(exc)}
+    except ProcessesLeft as exc:
+        out = {"failed": f"{path}: {exc}"}
+    write_fully(wfd, json.dumps(out).encode() + b"\n")
+
+
+def _forward(line: bytes) -> None:
+    """A line of a job's answer pipe that is not its answer nor the pipe's own: what the file's code printed, passed
+    on to the capture (the tracing process's standard error)."""
+    if line.startswith(PID_MARK) or line.startswith(STATUS_MARK) or line == IMPORTED_MARK:
         return
-    job = os.fork()
-    if job == 0:
-        _die_with_parent()
-        if libc.mount(b"proc", b"/proc", b"proc", ctypes.c_ulong(PROC_FLAGS), None) != 0:
-            os._exit(1)         # no job in a namespace whose /proc still shows the tracing process
-        return
-    while True:
-        try:
-            _, status = os.waitpid(job, 0)
-            break
-        except InterruptedError:
-            continue
-    if os.WIFSIGNALED(status):
-        signal.signal(os.WTERMSIG(status), signal.SIG_DFL)
-        os.kill(os.getpid(), os.WTERMSIG(status))
-    os._exit(os.WEXITSTATUS(status) if os.WIFEXITED(status) else 1)
+    try:
+        write_fully(2, line + b"\n")
+    except OSError:
+        pass
 
 
 def _listed(path: str) -> dict:
     """{"ids": the ids of the file's claims, in order} from an import in a child of its own, or {"error": why}."""
-    def listing(wfd: int) -> None:
-        _die_with_parent()
-        try:
-            out: dict = {"ids": [c.id for c in _import_bounded(path)]}
-        except CatalogError as exc:
-            out = {"failed": str(exc)}
-        except ProcessesLeft as exc:
-            out = {"failed": f"{path}: {exc}"}
-        write_fully(wfd, json.dumps(out).encode() + b"\n")
-
     with _Between():        # what the import started ends with it: no process outlives it to the claims
-        pid, rfd = _child(listing)
-        buf, found = b"", None
+        pid, rfd, buf = _child({"do": "list", "path": path})
+        found = None
         deadline = time.monotonic() + IMPORT_BUDGET
         try:
             while found is None:
+                while b"\n" in buf and found is None:
+                    line, buf = buf.split(b"\n", 1)
+                    found = _job_line(line, "ids")      # (other lines: the file's code wrote them)
+                    if found is None:
+                        _forward(line)
+                if found is not None:
+                    break
                 chunk = next_chunk(rfd, deadline)
                 if not chunk:
                     break
                 buf += chunk
-                while b"\n" in buf and found is None:
-                    line, buf = buf.split(b"\n", 1)
-                    found = _job_line(line, "ids")      # (other lines: the file's code wrote them)
         finally:
-            os.close(rfd)
-            _kill(pid, wait=True)
+            _end(pid, rfd, buf, wait=True)
     if found is None:
         how = _status_text(pid)
         if how.startswith("exited"):    # (it wrote no list: a file that ends its process, or writes for it)
@@ -769,51 +920,95 @@ def _tracer_by_size(path: str, requests: int, answer: int, timeout: float, memor
     its request is read, reading its own request (one line of ``requests``: what :func:`_tracer` is asked at one
     size) and writing its answer (one line) to ``answer`` itself, until a child finds no request left.  This
     process reads no request and no answer, and is not dumpable (no child reads its memory or descriptors through
-    /proc): a function traced at a size sees that size only, not the run's other sizes, nor how many there are."""
+    /proc): a function traced at a size sees that size only, not the run's other sizes, nor how many there are.
+    The loop runs in a process of its own (one thread), which forks with libc's fork, is told of a child's end by a
+    byte on a pipe and lets the kernel reap it: it holds no Python int of a child's pid or wait status, which the
+    next size's child, forked from it, would find (stop 85's sweep, W2: this loop kept the previous size's child in
+    its frame, and a size's graph depended on which other sizes the command asked for)."""
     from stiefelsym.ir.seal import import_engine
     _die_with_parent()
     _not_dumpable("the second phase's process")
     import_engine()                     # once, before the forks: each child imports the file itself
     _flush()
-    while True:
-        with _Between():        # a process one size's child left ends with it: the next size's sees none
-            status, pid = _size_child(path, requests, answer, timeout, memory)
-        if os.WIFEXITED(status) and os.WEXITSTATUS(status) == NO_MORE:
-            return
-        if not (os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0):
-            how = "killed" if os.WIFSIGNALED(status) else f"exit status {os.WEXITSTATUS(status)}"
-            data = json.dumps({"error": f"the tracing at one size ended without a result ({how})"}).encode()
-            os.write(answer, b"\n" + data + b"\n")
-
-
-def _size_child(path: str, requests: int, answer: int, timeout: float, memory: int | None) -> tuple[int, int]:
-    """One child of the second phase (:func:`_tracer_by_size`): its wait status and pid."""
-    pid = os.fork()
-    if pid == 0:
-        code = 0
+    loop = os.fork()
+    if loop == 0:
+        code = 1
         try:
-            line = b""
-            while not line.endswith(b"\n"):
-                byte = os.read(requests, 1)      # one line only: the next is the next child's
+            _size_loop(path, requests, answer, timeout, memory)
+            code = 0
+        finally:
+            os._exit(code)
+    os.waitpid(loop, 0)
+
+
+def _size_loop(path: str, requests: int, answer: int, timeout: float, memory: int | None) -> None:
+    import ctypes
+    _die_with_parent()
+    fork = ctypes.PyDLL(None).fork
+    fork.restype, fork.argtypes = None, []
+    me = os.getpid()
+    signal.signal(signal.SIGCHLD, signal.SIG_IGN)
+    while True:
+        byte = last = b""       # (nothing of the previous size's end in this frame when the next child is forked)
+        with _Between():        # a process one size's child left ends with it: the next size's sees none
+            r, w = os.pipe()
+            fork()
+            if os.getpid() != me:
+                os.close(r)
+                signal.signal(signal.SIGCHLD, signal.SIG_DFL)
+                _size_child(path, requests, answer, timeout, memory, w)     # (never returns)
+            os.close(w)
+            last = b""
+            while True:
+                byte = os.read(r, 1)
                 if not byte:
                     break
-                line += byte
-            os.close(requests)
-            if not line.strip():
-                code = NO_MORE
-            else:
-                data = _tracer(path, json.loads(line), timeout, memory,
-                               lambda marker: write_fully(answer, marker)) + b"\n"
-                write_fully(answer, data)
-        except BaseException:   # noqa: BLE001 - the verifying process sees a missing answer
-            code = 1
+                last = byte
+            os.close(r)
+        if last == b"n":
+            return
+
+
+def _size_child(path: str, requests: int, answer: int, timeout: float, memory: int | None, done: int) -> None:
+    """One child of the second phase (:func:`_size_loop`): it reads its request, traces the size in a process of its
+    own (which it reaps, and reports when it ended without an answer), writes one byte on ``done`` (``n``: no request
+    was left) and ends."""
+    end = b"d"
+    try:
+        line = b""
+        while not line.endswith(b"\n"):
+            byte = os.read(requests, 1)      # one line only: the next is the next child's
+            if not byte:
+                break
+            line += byte
+        os.close(requests)
+        if not line.strip():
+            end = b"n"
+        else:
+            worker = os.fork()
+            if worker == 0:
+                code = 1
+                try:
+                    os.close(done)
+                    data = _tracer(path, json.loads(line), timeout, memory,
+                                   lambda marker: write_fully(answer, marker)) + b"\n"
+                    write_fully(answer, data)
+                    code = 0
+                finally:
+                    _flush()
+                    os._exit(code)
+            _, status = os.waitpid(worker, 0)
+            if not (os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0):
+                _kill_tree_of(worker)
+                how = "killed" if os.WIFSIGNALED(status) else f"exit status {os.WEXITSTATUS(status)}"
+                data = json.dumps({"error": f"the tracing at one size ended without a result ({how})"}).encode()
+                os.write(answer, b"\n" + data + b"\n")
+    finally:
+        try:
+            os.write(done, end)
         finally:
             _flush()
-            os._exit(code)
-    _, status = os.waitpid(pid, 0)
-    if not (os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0):
-        _kill_tree_of(pid)
-    return status, pid
+            os._exit(0)
 
 
 class _Between:

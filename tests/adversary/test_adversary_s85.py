@@ -14,6 +14,14 @@
 - h2 M1: under the free method, the multipliers of ``multiplier_flow`` at a point of the claim's own
   (``twisted.at_point``) were lost when the flow was evaluated at the point: a KeyError, an `error` for a true
   statement that exact proves.  The point's flow keeps them now, evaluated there like its components.
+- h4 W1-W3 (class 4, after the stop's first change): a job was a fork of the tracing process, which held the
+  answers of the claims traced before it (on its stack: ``parts``; ``_STATUS``; and in freed memory), and in the
+  second phase the loop over sizes kept the previous size's child in its frame; a job's standard error was the
+  capture file, whose size counted what the jobs before it printed.  Every job is now forked from a zygote that
+  never holds an answer, a request, a pid or a status; its pipes are fresh, standard output and error included
+  (the tracing process passes the file's prints on); the loop over sizes forks with libc's fork and holds no pid.
+- h4 W5 (class 7): the method encode set on json's default encoder (an instance) sent another graph; the seal
+  watches that instance's attributes, and os.
 - h1 M1: the interpreter's string-hash seed was random per run: a file that branched on hash() was refuted in
   one run and passed in the next with the same --seed.  The interpreter now runs with PYTHONHASHSEED=0 (Python
   3.11 and later, where -I can be written -s -P).
@@ -115,3 +123,22 @@ def test_multipliers_at_a_point_of_the_claims_own_under_free():
             "p2-atpoint-multipliers": "proved" if method == "exact" else "checked",
             "p2-atpoint-multipliers-twin": "fails",
             "p2-own-multipliers": "proved" if method == "exact" else "checked"}
+
+
+@NAMESPACES
+@pytest.mark.parametrize("name", ["c4_frames_frames.py", "c4_frames_status.py", "c4_capture_size.py"])
+def test_a_job_finds_nothing_of_the_jobs_before_it(name):
+    for method in ("exact", "modular"):
+        v = _verdicts(S85 / "h4" / name, "--size", "3,1", "--method", method)
+        assert len(set(v.values())) == 1 and set(v.values()) <= {"fails"}, (name, method, v)
+
+
+def test_a_size_finds_nothing_of_the_sizes_before_it():
+    for sizes in (["--size", "4,1", "--size", "4,2"], ["--size", "4,2"]):
+        recs = _records(S85 / "h4" / "c4_sizes_frames.py", "--method", "exact", *sizes)
+        assert {rec["verdict"] for rec in recs.values()} == {"fails"}, (sizes, recs)
+
+
+def test_a_method_set_on_jsons_encoder_is_seen():
+    (rec,) = _records(S85 / "h4" / "c7_json_instance.py", "--size", "3,1", "--method", "exact").values()
+    assert rec["verdict"] == "error" and "EngineChanged" in rec["message"], rec["message"]
