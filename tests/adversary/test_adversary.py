@@ -288,19 +288,14 @@ SQUARE_FALSE = ("adv-square-handbuilt", "adv-square-replace", "adv-square-xpt", 
 R2_ADMITS_ALL = "adv-r2-admits-all"
 
 
-def test_r_is_n_with_sizes_r_less_than_n_is_not_proved():
-    v = verdicts("square_sizes_inconsistent.py", "free")
-    assert all(v[c] not in PASSING for c in SQUARE_FALSE + (R2_ADMITS_ALL,)), v
-
-
-def test_r_is_n_with_sizes_r_less_than_n_fails_at_its_sizes():
-    methods = ("modular", "float")
-    for method, v in default_size_verdicts("square_sizes_inconsistent.py", methods).items():
-        for c in SQUARE_FALSE:
-            assert v[(c, 3, 2)] == "fails", (method, v)
-            assert v[(c, 3, 3)] not in ("fails", "error"), (method, v)
-    v = _v_each("square_sizes_inconsistent.py", methods, R2_ADMITS_ALL, size="3,3", ids=(R2_ADMITS_ALL,))
-    assert set(v.values()) == {"fails"}, v
+def test_r_is_n_with_sizes_r_less_than_n_is_refused():
+    """Since stop 85 (its sweep's M2) a statement of sizes whose listed sizes its own fields exclude is refused when
+    the claim is registered: the file has no verdict (before, the free method did not prove its false claims and
+    the fixed-size methods refuted them at (3,2))."""
+    run = run_verify("square_sizes_inconsistent.py", "free", "3,2", ())
+    assert run.returncode == 2 and "which its own statement of sizes" in run.stderr, run.stderr[-600:]
+    run = cli("verify", "--claims", str(HERE / "square_sizes_inconsistent.py"), "--method", "modular")
+    assert run.returncode == 2 and "excludes" in run.stderr, run.stderr[-600:]
 
 
 # -- O. a function handed to the scene closes over a value of the enclosing scene -------------------
