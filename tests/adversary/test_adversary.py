@@ -3,7 +3,6 @@ CORRECT outcome; each fails today, hence ``xfail(strict=True)``: when a route is
 passes and the strict xfail turns red, to be unmarked.  Every run is a fresh process (the routes
 change process-wide state: primitives, backends, the graph cache)."""
 import json
-import re
 import subprocess
 import sys
 
@@ -267,26 +266,6 @@ def test_operator_letter_misuse_fails_at_a_fixed_size():
 
 
 # -- N. r_is_n declared on a SizeSpec whose own sizes have r < n ----------------------------------
-
-ALL_LINES = re.compile(r"^(\S+) \((\d+),(\d+)\) (\w+): (\w+)")
-
-
-def default_size_verdicts(claims_file, methods):
-    """{method: {(claim id, n, r): verdict}} of one `stiefelsym verify` run of ``methods`` at the claims' own
-    default sizes."""
-    run = cli("verify", "--claims", str(HERE / claims_file), *[a for m in methods for a in ("--method", m)])
-    out = {}
-    for m in map(ALL_LINES.match, run.stdout.splitlines()):
-        if m:
-            out.setdefault(m.group(4), {})[(m.group(1), int(m.group(2)), int(m.group(3)))] = m.group(5)
-    assert set(out) == set(methods), (methods, sorted(out))
-    return out
-
-
-SQUARE_FALSE = ("adv-square-handbuilt", "adv-square-replace", "adv-square-xpt", "adv-square-set-while-traced")
-#: r_min = r_max = 2 on a SizeSpec subclass whose admits() takes every size: --size 3,3 is admitted
-R2_ADMITS_ALL = "adv-r2-admits-all"
-
 
 def test_r_is_n_with_sizes_r_less_than_n_is_refused():
     """Since stop 85 (its sweep's M2) a statement of sizes whose listed sizes its own fields exclude is refused when
