@@ -198,7 +198,7 @@ def theta_is_a_poisson_map(s):
        statement=r"R=\mathrm{diag}(-1,1,\dots,1)\in O(r)\setminus SO(r):\quad \Theta(XR,PR)=\Theta(X,P),\quad "
                  r"\Psi(XR,PR)=R\Psi R")
 def theta_is_invariant_under_a_reflection(s):
-    """Θ = Φ + XXᵀ is invariant under (X, P) ↦ (XR, PR) for the reflection R = diag(−1, 1, …, 1) ∈ O(r) ∖ SO(r), which maps Ψ to RΨR: the ℤ₂ of the covering θ of §6 is O(r)/SO(r), acting on (T*V)/SO(r) by this reflection; (X, P) ↦ (−X, −P) is R = −I_r, which lies in SO(r) when r is even."""
+    """Θ = Φ + XXᵀ is invariant under (X, P) ↦ (XR, PR) for the reflection R = diag(−1, 1, …, 1) ∈ O(r) ∖ SO(r), which maps Ψ to RΨR: the ℤ₂ of the covering θ of §6 is O(r)/SO(r), acting on (T*V)/SO(r) by this reflection; (X, P) ↦ (−X, −P) is R = −Iᵣ, which lies in SO(r) when r is even."""
     r = s.r
     R = s.mat([[(s.q(-1) if i == 0 else s.q(1)) if i == j else s.q(0) for j in range(r)] for i in range(r)],
               ("r", "r"))

@@ -312,27 +312,27 @@ def so_rows(s, y, drop_sym_sym):
 
 
 def pencil_so_rows(s, l1, l2, x):
-    """The so(n) rows of Λ_{λ1,λ2}(x) = λ1Λ1(x) + λ2Λ2(x) (up to the factor −2 of :func:`form_matrix`)."""
+    """The so(n) rows of Λ_{λ₁,λ₂}(x) = λ1Λ1(x) + λ2Λ2(x) (up to the factor −2 of :func:`form_matrix`)."""
     return so_rows(s, x, True) * l1 + so_rows(s, x - s.A, False) * l2
 
 
 @claim("pencil-gl-isomorphism", paper=("central", "LAMBDA12"), kind="dim",
        sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"), fails_at=lambda n, r: True,
        place="the sentence before (4) §6",
-       erratum="""§6 says: “For λ₂ ≠ 0, the bracket Λ_{λ1,λ2} is isomorphic to the canonical Lie–Poisson
-       bracket on gl(n)”.  That bracket vanishes at 0, so Λ_{λ1,λ2} would vanish at some point x₀.  At
+       erratum="""§6 says: “For λ₂ ≠ 0, the bracket Λ_{λ₁,λ₂} is isomorphic to the canonical Lie–Poisson
+       bracket on gl(n)”.  That bracket vanishes at 0, so Λ_{λ₁,λ₂} would vanish at some point x₀.  At
        λ₁ + λ₂ = 0 it vanishes nowhere: the rows of Λ_{−1,1}(x) whose first argument lies in so(n) do not depend on x
-       (Λ_{λ1,λ2}(ξ, ·)|_x = (λ₁ + λ₂)⟨x, [ξ, ·]⟩ − λ₂⟨A, [ξ, ·]⟩ for ξ ∈ so(n)), and they have rank n(n − 1)/2
+       (Λ_{λ₁,λ₂}(ξ, ·)|_x = (λ₁ + λ₂)⟨x, [ξ, ·]⟩ − λ₂⟨A, [ξ, ·]⟩ for ξ ∈ so(n)), and they have rank n(n − 1)/2
        for distinct a_i, since ξ ↦ [A, ξ] is injective on so(n).  So Λ_{−λ₂,λ₂} has rank n² − n at every point
        of gl(n), x = 0 included, and is not isomorphic to a Lie–Poisson bracket.  The number the witness
        computes is the rank of those rows at x = 0, where the printed statement gives 0.  The Casimirs printed
        next divide by λ₁ + λ₂, and the proof of Lemma 6.3 states the isomorphism “if λ₁ + λ₂ ≠ 0, λ₂ ≠ 0”:
-       with that condition Λ_{λ1,λ2} vanishes at x₀ = λ₂/(λ₁ + λ₂)·A, the image of 0 under the isomorphism
+       with that condition Λ_{λ₁,λ₂} vanishes at x₀ = λ₂/(λ₁ + λ₂)·A, the image of 0 under the isomorphism
        ψ(x) = ch + v − c²A, c² = λ₂/(λ₁ + λ₂), of the claim pencil-casimirs.""",
        statement=r"\lambda_2\ne0\ \Rightarrow\ \Lambda_{\lambda_1,\lambda_2}\cong\text{the Lie--Poisson bracket of }"
                  r"gl(n),\ \text{which vanishes at }0")
 def pencil_gl_isomorphism(s):
-    """The pencil bracket Λ_{λ1,λ2} with λ₂ ≠ 0 is isomorphic to the Lie–Poisson bracket of gl(n), so it vanishes at some point: at λ₁ = −λ₂ = −1 its so(n) rows do not depend on x, so they would vanish at x = 0."""
+    """The pencil bracket Λ_{λ₁,λ₂} with λ₂ ≠ 0 is isomorphic to the Lie–Poisson bracket of gl(n), so it vanishes at some point: at λ₁ = −λ₂ = −1 its so(n) rows do not depend on x, so they would vanish at x = 0."""
     one = s.q(1)
     x, zero = generic_gl(s), s.zeros(s.n, s.n, ("n", "n"))
     at_0 = pencil_so_rows(s, -one, one, zero)
