@@ -71,6 +71,14 @@ def theta_with_minus_phi(s):
     return {"Poisson": B.poisson_map_residual(s, B.dirac, lambda t: -t.Phi + t.X @ t.X.T, B.lambda1(), a, b)}
 
 
+def psi_invariant_under_the_reflection(s):
+    """Corrupted (theta-reflection): Ψ(XR, PR) = Ψ (it is RΨR)."""
+    r = s.r
+    R = s.mat([[(s.q(-1) if i == 0 else s.q(1)) if i == j else s.q(0) for j in range(r)] for i in range(r)], ("r", "r"))
+    XR, PR = s.X @ R, s.P @ R
+    return {"Psi": XR.T @ PR - PR.T @ XR - s.Psi}
+
+
 def phi_action_with_plus_sign(s):
     """Corrupted (theta-factorization): {Φ_ξ, tr(UᵀX)} = +tr(UᵀξX)."""
     U = s.generic("U", "n", "r")
@@ -168,6 +176,7 @@ CORRUPTIONS = [
     ("pencil-casimirs", casimir_without_square, (3, 1)),
     ("theta-poisson-map", theta_with_minus_phi, (3, 2)),
     ("theta-factorization", phi_action_with_plus_sign, (3, 2)),
+    ("theta-reflection", psi_invariant_under_the_reflection, (3, 2)),
     ("reduced-bracket-casimirs", J1_rotation_sign, (3, 2)),
     ("reduced-bracket-casimirs", J3_not_a_casimir, (4, 3)),   # (r = n: PᵀP = −Ψ²/4 is a function of Ψ)
     ("cpb-hamiltonian", cpb_potential_sign, (3, 2)),

@@ -126,8 +126,10 @@ def test_a_declared_r_contradicted_beyond_16_is_not_proved_for_every_size(method
     """Closed (AB): a declared r is believed only when admits() is decided by the declared fields (a plain
     SizeSpec, or a user's plain statement rebuilt with `fields_first`, whose admits() conjoins them); a
     subclass's own admits() leaves the claim to the fixed-size methods."""
-    v = verdicts(BEYOND, method, ids=BEYOND_FALSE) if method == "free" else \
-        parse_all(cli("verify", *BEYOND_FALSE, "--claims", str(HERE / BEYOND), "--method", "auto").stdout)
+    run = cli("verify", *BEYOND_FALSE, "--claims", str(HERE / BEYOND), "--method", method)
+    if run.returncode == 2 and "which its own statement of sizes" in run.stderr:
+        return      # since stop 85: a statement whose listed sizes its fields exclude is refused when registered
+    v = verdicts(BEYOND, method, ids=BEYOND_FALSE) if method == "free" else parse_all(run.stdout)
     got = {c: x for c, x in v.items()} if method == "free" else {c: x for (c, m), x in v.items() if m == "free"}
     assert set(got) == set(BEYOND_FALSE) and not set(got.values()) & set(PASSING), got
 
