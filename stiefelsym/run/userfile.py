@@ -756,7 +756,8 @@ def _zygote(ctl: int, sock: int) -> None:
     (SIGCHLD ignored: no wait status is read here), and the request and the pipes are taken by the child."""
     import ctypes
     _die_with_parent()
-    _close_all_but({0, 1, 2, ctl, sock})
+    from stiefelsym.run.sandbox import _close_inherited
+    _close_inherited({ctl, sock})       # (standard input, output and error stay: the job replaces the last two)
     fork = ctypes.PyDLL(None).fork
     fork.restype, fork.argtypes = None, []
     me = os.getpid()
@@ -771,19 +772,6 @@ def _zygote(ctl: int, sock: int) -> None:
                 code = _starter(ctl, sock)
             finally:
                 os._exit(code)
-
-
-def _close_all_but(keep: set[int]) -> None:
-    try:
-        fds = [int(x) for x in os.listdir("/proc/self/fd")]
-    except OSError:
-        fds = list(range(1 << 12))
-    for fd in fds:
-        if fd not in keep:
-            try:
-                os.close(fd)
-            except OSError:
-                pass
 
 
 #: unshare(2) flags: a user namespace (with all capabilities in it, so that the others need no privilege
