@@ -142,3 +142,15 @@ def test_a_size_finds_nothing_of_the_sizes_before_it():
 def test_a_method_set_on_jsons_encoder_is_seen():
     (rec,) = _records(S85 / "h4" / "c7_json_instance.py", "--size", "3,1", "--method", "exact").values()
     assert rec["verdict"] == "error" and "EngineChanged" in rec["message"], rec["message"]
+
+
+def test_multipliers_at_another_point_are_not_those_of_the_scene():
+    """The stop's own attempt on that change: the multipliers at (X, −P) taken for those at (X, P) (a Hamiltonian
+    with a term linear in P), or with a sign slip, are never proved; their true controls are."""
+    path = S85 / "own" / "point_multipliers_false.py"
+    assert _verdicts(path, "--method", "free") == {"pm-lambda-same-f": "undecided", "pm-lambda-shift-f": "undecided",
+                                                   "pm-pi-zero-t": "proved", "pm-lambda-t": "proved"}
+    for method in ("exact", "modular", "float"):
+        v = _verdicts(path, "--method", method, "--size", "3,2")
+        assert v["pm-lambda-same-f"] == v["pm-lambda-shift-f"] == "fails", (method, v)
+        assert v["pm-pi-zero-t"] == v["pm-lambda-t"] != "fails", (method, v)
