@@ -96,6 +96,10 @@ class Result:
     #: of a correction's record: what it changes in the claim's graph, in the paper's notation (one
     #: dict per change: where, old, new and their LaTeX old_tex, new_tex; see stiefelsym.ir.notation)
     change: list[dict[str, str]] = field(default_factory=list)
+    #: the claim's outputs as traced (the graph ``digest`` names, read back in the paper's notation): one
+    #: [name, Unicode, LaTeX] per output; what every method evaluated, whatever the claim's code says it is
+    #: (``stiefelsym check`` compares it with the graph it traces again).  Empty where the claim does not trace
+    traced: list[list[str]] = field(default_factory=list)
     #: the claim's expectation of its residuals ("holds": they vanish; "nonzero": they do not vanish identically)
     #: and its realization of T*V: part of what the verdict is about, bound to the claim like its words
     expect: str = "holds"
@@ -405,6 +409,8 @@ _FIELD_TYPES: tuple[tuple[str, Callable[[Any], bool], str], ...] = (
     ("change", lambda x: type(x) is list and all(type(c) is dict and all(type(v) is str or _is_int(v)
                                                                          for v in c.values()) for c in x),
      "a list of changes"),
+    ("traced", lambda x: type(x) is list and all(type(t) is list and len(t) == 3 and all(type(v) is str for v in t)
+                                                 for t in x), "a list of [name, text, LaTeX] outputs"),
 )
 
 

@@ -1081,10 +1081,16 @@ def list_claims(claims_files: tuple[str, ...]) -> None:
 @click.argument("claim_id", metavar="CLAIM")
 @click.option("--claims", "claims_files", metavar="FILE|DIR", multiple=True,
               help="Look the claim up in this file first (repeatable).")
-def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
-    """Show one claim: statement, docstring, sizes, source."""
+@click.option("--size", "size", type=SizeType(), default=None, metavar="n,r",
+              help="Show the outputs as traced at this size (default: with symbolic sizes where the claim "
+                   "traces so, else at its smallest size).")
+def show(claim_id: str, claims_files: tuple[str, ...], size: Any = None) -> None:
+    """Show one claim: statement, docstring, sizes, source, and its outputs as traced (what every method
+    evaluates, read back from the claim's graph)."""
     registry, _ = _registry(claims_files, (claim_id,))
     c = _lookup(registry, claim_id)
+    if size is not None and not c.sizes.admits(size.n, size.r):
+        raise click.UsageError(f"{c.id} is not stated at ({size.n},{size.r}) (its sizes: {_sizes_text(c.sizes)})")
     click.echo(f"{c.id}  (paper: {', '.join(c.paper)})  §{c.section or '-'}")
     click.echo(f"kind:        {c.kind}: {_report.KIND_MEANING.get(c.kind, '')}")
     if c.title:
@@ -1119,6 +1125,23 @@ def show(claim_id: str, claims_files: tuple[str, ...]) -> None:
                                  + [f" at {'r = n' if k == 0 else f'n - r <= {k}'} at n = {n}"
                                     for n, k in corr.exact_corank])))
     click.echo(f"source:      {_source(c)}")
+    _show_traced(c, size)
+
+
+def _show_traced(c: Any, size: Any) -> None:
+    """The claim's outputs as traced (:func:`stiefelsym.run.runner.traced_text`): at ``size``, else with
+    symbolic sizes, else at its smallest size; a claim that does not trace says so."""
+    from stiefelsym.run.runner import traced_text
+    where, traced = (f"({size.n},{size.r})", traced_text(c, size)) if size is not None else ("every size", traced_text(c, None))
+    if not traced and size is None and len(c.sizes):
+        low = min(c.sizes, key=lambda z: (z.n, z.r))
+        where, traced = f"({low.n},{low.r})", traced_text(c, low)
+    if not traced:
+        click.echo("traced:      (the claim does not trace here: `stiefelsym verify` says why)")
+        return
+    click.echo(f"traced:      at {where}, read back from the claim's graph:")
+    for name, text, _tex in traced:
+        click.echo(f"  {name + ': ' if name else ''}{text}")
 
 
 @main.command()

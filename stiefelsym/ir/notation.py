@@ -721,6 +721,35 @@ def outputs(g: Graph) -> list[tuple[str, Any]]:
     return list(zip(names, vals))
 
 
+#: at most this many letters and numbers of each output are printed where a graph is shown as traced
+TRACED_CAP = 60
+
+
+def traced_outputs(g: Graph, cap: int = TRACED_CAP) -> list[tuple[str, str, str]]:
+    """Each output of the claim's graph as it was traced: (name, Unicode, LaTeX), in the claim's
+    order; a claim that returns one value (no dict) has one output named "".  This is what every
+    method evaluated, read back from the graph alone (never from the claim's code): a reader compares
+    it with the statement, and ``stiefelsym check`` compares it with the graph it traces again.  A node
+    with no notation of its own is written as a function call; one the reader cannot read at all is
+    written "(no notation)"."""
+    outs = outputs(g)
+    if not outs and g.output is not None:
+        outs = [("", g.output)]
+    rd = Reader(g)
+    uni, tex = Printer(False, cap), Printer(True, cap)
+    out = []
+    for name, ref in outs:
+        try:
+            e = rd.arg(ref)
+            out.append((str(name), uni(e), tex(e)))
+        except Exception:  # noqa: BLE001 - a node without notation is named so, never an error of the run
+            out.append((str(name), NO_NOTATION, r"	ext{(no notation)}"))
+    return out
+
+
+NO_NOTATION = "(no notation)"
+
+
 # ---------------------------------------------------------------------------------------------
 # the smallest change between two graphs
 

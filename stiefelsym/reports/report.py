@@ -236,6 +236,14 @@ def telling(changes: list[dict[str, str]]) -> list[dict[str, str]]:
     return changes
 
 
+def traced_intro(where: str, graphs: int) -> str:
+    """The words before a claim's outputs as traced (:meth:`ClaimResults.traced`)."""
+    at = ("one graph for every size run" if not where else f"at {where}" if graphs == 1 else
+          f"at {where}, the smallest size run; the claim has a graph at each size, {graphs} in all")
+    return ("As traced (what every method evaluated, read back from the claim's graph, never from its code; "
+            f"{at})")
+
+
 class ClaimResults:
     """All results of one claim: as printed, and per candidate correction."""
 
@@ -307,6 +315,20 @@ class ClaimResults:
                 label = m if len(groups) == 1 else f"{m} at {', '.join(dict.fromkeys(sizes))}"
                 how.append((label, "; ".join(reductions)))
         return how
+
+    def traced(self) -> tuple[str, list[list[str]], int]:
+        """The outputs as traced of the claim as printed: (where, outputs, how many graphs), read from its
+        records.  One graph for every record (one digest): where = "" when it is more than one size's run, else
+        the size; several graphs (a claim traced at each size): the outputs of the smallest size's graph and
+        where = that size.  ("", [], 0) when no record has them."""
+        rs = [r for r in self.printed if r.traced and r.digest]
+        if not rs:
+            return "", [], 0
+        graphs = len({r.digest for r in rs})
+        sized = sorted((r for r in rs if r.n is not None), key=lambda r: _size_key((r.n, r.r)))
+        if graphs == 1:
+            return ("" if len(rs) > 1 or not sized else sized[0].size), rs[0].traced, 1
+        return sized[0].size, sized[0].traced, graphs
 
     def notes(self) -> list[Result]:
         """Results whose message the reader needs: not passing, or not expected."""
@@ -1040,6 +1062,10 @@ def _md_claim(c: ClaimResults) -> list[str]:
     if how:
         out += ["How the verdicts were obtained:", ""]
         out += [f"- {m}: {_md_escape(unicode_words(engine_words(text)))}" for m, text in how] + [""]
+    where, traced, graphs = c.traced()
+    if traced:
+        out += [f"{_md_escape(traced_intro(where, graphs))}:", ""]
+        out += [f"- {_md_escape(name) + ': ' if name else ''}{_md_escape(text)}" for name, text, _tex in traced] + [""]
     if any(r.derivation and r.verdict == "proved" for r in c.printed):
         out += ["The dimension-free derivation (residual, rules applied, normal form) is in "
                 "`verification-runs.tex`.", ""]
@@ -2054,6 +2080,17 @@ def _tex_section_table(claims: list[ClaimResults], meta: dict[str, Any]) -> list
     return out
 
 
+def _tex_traced(c: ClaimResults) -> list[str]:
+    """A claims file's claim's outputs as traced, in LaTeX: the statement that was verified, which a reader
+    compares with the file's words (a catalog claim's are in verification.md, beside the paper's display)."""
+    where, traced, graphs = c.traced()
+    if not (traced and c.own):
+        return []
+    return [tex_escape(traced_intro(where, graphs)) + ":"] + _tex_items(
+        [(tex_escape(f"{name}: ") if name else "")
+         + (_tex_inline(tex) if math_ok(tex) and tex.isascii() else tex_escape(text)) for name, text, tex in traced])
+
+
 def _tex_claim_brief(c: ClaimResults) -> list[str]:
     """A claim in a few lines: its statement, the verdict for all n, r, and its sizes by method."""
     out = [_tex_claim_heading(c)]
@@ -2061,6 +2098,7 @@ def _tex_claim_brief(c: ClaimResults) -> list[str]:
         out += [tex_words(c.title), ""]
     if c.statement.strip():
         out.append(tex_display(c.statement))
+    out += _tex_traced(c)
     free = next((r for r in c.printed if r.n is None), None)
     lines = []
     if free is not None:
@@ -2116,6 +2154,7 @@ def _tex_claim(c: ClaimResults) -> list[str]:
     if how:
         out += ["How the verdicts were obtained:"]
         out += _tex_items([tex_words(f"{m}: {engine_words(text)}") for m, text in how])
+    out += _tex_traced(c)
     notes = [tex_words(f"{r.size} {r.method}: {engine_words(short(r.message, 300))}") for r in c.notes()]
     if notes:
         out += ["Notes:"] + _tex_items(notes)

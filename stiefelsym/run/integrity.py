@@ -507,7 +507,7 @@ def rerun_problems(records: list[dict], meta: dict | None, origin: dict[str, str
 def record_graph(r: dict, claim: Claim) -> tuple[Claim, Callable | None, str]:
     """The claim (its correction, for a record of one) and function the record ``r`` is a run of, and "" when the
     record's graph digest is theirs at its size, or why not."""
-    from stiefelsym.run.runner import graph_digest
+    from stiefelsym.run.runner import graph_digest, traced_text
     n = r.get("n")
     size = None if n is None else Size(n, r.get("r"))
     func = None
@@ -522,6 +522,12 @@ def record_graph(r: dict, claim: Claim) -> tuple[Claim, Callable | None, str]:
     if (r.get("digest") or "") != digest:
         return claim, func, (f"the record's graph digest {str(r.get('digest'))[:12] or '(none)'} is not the "
                              f"claim's ({digest[:12] or 'it does not trace'})")
+    # the outputs as the report prints them are its graph's, read again (a record written before the field existed
+    # has none, and is refused too: what a reader is shown as verified must be what the graph computes)
+    traced = traced_text(claim, size, func) if digest else []
+    if (r.get("traced") or []) != traced:
+        return claim, func, ("the record's outputs as traced are not what its graph computes, read again"
+                             + (f" (first: {traced[0][0]}: {traced[0][1]})" if traced else ""))
     return claim, func, ""
 
 

@@ -156,6 +156,7 @@ def _guarded_on(claim: Claim, size: Size | None, method: str, seed: int, func: C
             res = _stated_shared(res, shared, size)
         if not res.digest:
             res.digest = graph_digest(claim, size, func)
+        res.traced = traced_text(claim, size, func) if res.digest else []
         if res.certificate_data is not None:     # what the certificate is about (the standalone checker binds it)
             res.certificate_data = dict(res.certificate_data, about={"claim": claim.id, "digest": res.digest})
         return _confinement_stated(res, func or claim.func)
@@ -174,6 +175,7 @@ def _guarded_on(claim: Claim, size: Size | None, method: str, seed: int, func: C
             res.verdict, res.message = "inconclusive", str(exc)
     # an error is bound to the graph it was met on like any verdict ("" when the claim does not trace)
     res.digest = _digest_or_none(claim, size, func)
+    res.traced = traced_text(claim, size, func) if res.digest else []
     return _confinement_stated(res, func or claim.func)
 
 
@@ -314,6 +316,50 @@ def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) 
     except Exception:   # noqa: BLE001 - as above
         return ""
     return hashlib.sha256("\n".join(f"{f}: {d}" for f, d in graphs).encode()).hexdigest()
+
+
+def traced_text(claim: Claim, size: Size | None, func: Callable | None = None) -> list[list[str]]:
+    """The claim's outputs as traced at ``size`` (None: symbolic sizes), in the paper's notation: one
+    [name, Unicode, LaTeX] per output (:func:`stiefelsym.ir.notation.traced_outputs`), read from the graph
+    the record's digest names; [] when the claim does not trace there.  A claim the dimension-free method
+    takes on families of sizes has each family's outputs, named with the family."""
+    from stiefelsym.ir import _compiled_graph as compile_claim
+    from stiefelsym.ir.notation import traced_outputs
+    from stiefelsym.methods.families import size_families, stated_on
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS[claim.realization]
+    f = func or claim.func
+    try:
+        with stated_on(claim, func):
+            try:
+                graphs = [("", compile_claim(f, size.n if size else None, size.r if size else None,
+                                             (cons.name, cons.build)))]
+            except Exception:   # noqa: BLE001 - with symbolic sizes: perhaps on families (as graph_digest)
+                if size is not None:
+                    return []
+                families, _why = size_families(claim)
+                if not families or None in families:
+                    return []
+                graphs = [(str(fam), compile_claim(f, None, None, (cons.name, cons.build), family=fam))
+                          for fam in families]
+    except (KeyboardInterrupt, Terminated):
+        raise
+    except BaseException:   # noqa: BLE001 - the run's verdict says why the claim does not trace
+        return []
+    out: list[list[str]] = []
+    for fam, g in graphs:
+        key = g.digest()
+        text = _TRACED.get(key)
+        if text is None:
+            text = _TRACED[key] = [list(t) for t in traced_outputs(g)]
+            while len(_TRACED) > CHANGES_CACHE_SIZE:
+                del _TRACED[next(iter(_TRACED))]
+        out += [[f"{name} ({fam})" if fam else name, uni, tex] for name, uni, tex in text]
+    return copy.deepcopy(out)
+
+
+#: the outputs of a graph in the paper's notation (:func:`traced_text`), keyed by its digest
+_TRACED: dict[str, list[list[str]]] = {}
 
 
 def graph_change(claim: Claim, func: Callable, size: Size | None) -> list[dict[str, str]]:

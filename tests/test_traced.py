@@ -1,0 +1,133 @@
+"""The outputs of a claim as traced: every record carries its graph read back in the paper's notation (what every
+method evaluated), the reports print it, `stiefelsym show` prints it, and `stiefelsym check` rejects a record whose
+text is not its graph's.
+
+This is how the reports make the one route left open at the boundary of a job visible (tests/adversary/README.md,
+stop 85): a claims file whose code sends the graph of another function (c7_forged_line.py) gets the verdict of that
+graph, and the report now prints that graph, XᵀX − Iᵣ, where the file's code reads X Xᵀ − Iₙ."""
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+FORGED = HERE / "adversary" / "s85" / "h4" / "c7_forged_line.py"
+
+CLAIMS = '''
+from stiefelsym import admissible, claim
+
+
+@claim("mine-orth", kind="id", sizes=admissible(n_max=3))
+def mine_orth(s):
+    """The constraints of V(n, r)."""
+    return {"orth": s.X.T @ s.X - s.Ir, "tangent": s.X.T @ s.P + s.P.T @ s.X}
+
+
+@claim("mine-entry", kind="id", sizes=[(2, 1), (3, 1)])
+def mine_entry(s):
+    """A sum over the rows (n used as a number): traced at each size."""
+    return {"x11": sum(s.X[i, 0] * s.X[i, 0] for i in range(s.n)) - (s.X.T @ s.X)[0, 0]}
+'''
+
+
+def _invoke(cwd: Path, *args: str):
+    from click.testing import CliRunner
+    from stiefelsym import cli
+    old = os.getcwd()
+    os.chdir(cwd)
+    try:
+        return CliRunner().invoke(cli.main, list(args), prog_name="stiefelsym")
+    finally:
+        os.chdir(old)
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    d = tmp_path_factory.mktemp("traced")
+    (d / "mine.py").write_text(CLAIMS, encoding="utf-8")
+    out = _invoke(d, "verify", "--claims", "mine.py", "--method", "exact", "--method", "free",
+                  "--report-dir", "rep", "--jobs", "1")
+    assert out.exit_code == 0, out.output
+    return d
+
+
+def _records(d: Path) -> list[dict]:
+    return json.loads((d / "rep" / "results.json").read_text(encoding="utf-8"))["results"]
+
+
+def test_every_record_carries_its_graph_in_notation(run):
+    recs = _records(run)
+    orth = [r for r in recs if r["claim"] == "mine-orth"]
+    assert orth and all(r["traced"] == [["orth", "XᵀX − Iᵣ", "X^T X - I_r"],
+                                        ["tangent", "XᵀP + PᵀX", "X^T P + P^T X"]] for r in orth)
+    entry = {(r["n"], r["r"]): r["traced"] for r in recs if r["claim"] == "mine-entry" and r["n"] is not None}
+    assert set(entry) == {(2, 1), (3, 1)} and all(t and t[0][0] == "x11" for t in entry.values())
+
+
+def test_the_reports_print_the_outputs_as_traced(run):
+    md = (run / "rep" / "verification.md").read_text(encoding="utf-8")
+    assert "one graph for every size run" in md and "- orth: XᵀX − Iᵣ" in md
+    # a claim traced at each size: the smallest size's graph, and how many graphs there are
+    assert "at (2,1), the smallest size run; the claim has a graph at each size, 2 in all" in md
+    tex = (run / "rep" / "verification.tex").read_text(encoding="utf-8")
+    assert r"\item orth: $X^T X - I_r$" in tex
+
+
+def test_check_rejects_an_edited_or_missing_text(run):
+    path = run / "rep" / "results.json"
+    good = _invoke(run, "check", str(path), "--claims", "mine.py", "--no-rerun")
+    assert good.exit_code == 0, good.output
+    payload = json.loads(path.read_text(encoding="utf-8"))
+    for k, edit in enumerate((lambda r: r["traced"][0].__setitem__(1, "XXᵀ − Iₙ"), lambda r: r.pop("traced"))):
+        forged = json.loads(json.dumps(payload))
+        edit(forged["results"][0])
+        p = run / f"forged{k}.json"
+        p.write_text(json.dumps(forged), encoding="utf-8")
+        out = _invoke(run, "check", str(p), "--claims", "mine.py", "--no-rerun")
+        assert out.exit_code == 1 and "outputs as traced are not what its graph computes" in out.output, out.output
+
+
+def test_a_malformed_text_is_refused_and_unsafe_latex_is_never_printed(run):
+    from stiefelsym.results import record_problems
+    rec = dict(_records(run)[0])
+    for bad in ("XᵀX", [["orth", "XᵀX"]], [["orth", "XᵀX", 3]]):
+        assert any("traced" in p for p in record_problems(dict(rec, traced=bad)))
+    payload = json.loads((run / "rep" / "results.json").read_text(encoding="utf-8"))
+    for r in payload["results"]:
+        if r["traced"]:
+            r["traced"][0][2] = r"\input{/etc/hostname}"
+    (run / "unsafe.json").write_text(json.dumps(payload), encoding="utf-8")
+    # the report itself traces a claims file's claims again: an edited text is refused before anything is rendered
+    out = _invoke(run, "report", "--results", "unsafe.json", "--report-dir", "unsafe")
+    assert out.exit_code == 2 and "outputs as traced are not what its graph computes" in out.output, out.output
+    # and the LaTeX of a text is printed only when it is mathematics (else its Unicode, escaped)
+    from stiefelsym.reports.report import ClaimResults, _tex_traced
+    from stiefelsym.results import Result
+    res = Result.from_json(dict(rec, traced=[["orth", "XᵀX − Iᵣ", r"\input{/etc/hostname}"]]))
+    c = ClaimResults(res)
+    c.add(res)
+    text = "\n".join(_tex_traced(c))
+    assert r"\input" not in text and "orth:" in text
+
+
+def test_show_prints_the_outputs_as_traced(tmp_path):
+    out = _invoke(tmp_path, "show", "euclidean-flow")
+    assert out.exit_code == 0 and "traced:      at every size" in out.output and "dP/dt: Ṗ + XPᵀP" in out.output
+    out = _invoke(tmp_path, "show", "stiefel-corank-one")      # traced at fixed sizes: its smallest
+    assert out.exit_code == 0 and "traced:      at (2,1)" in out.output
+    out = _invoke(tmp_path, "show", "stiefel-corank-one", "--size", "9,1")
+    assert out.exit_code == 2 and "not stated at (9,1)" in out.output
+
+
+def test_a_forged_answer_line_is_visible_in_the_report(tmp_path):
+    """The job's answer forged by the file (stop 85's h4 W6): the verdict is that of the graph sent, XᵀX − Iᵣ, and
+    the report prints that graph, which a reader compares with the file's code (X Xᵀ − Iₙ)."""
+    out = _invoke(tmp_path, "verify", "--claims", str(FORGED), "--method", "exact", "--size", "3,1",
+                  "--report-dir", "rep", "--jobs", "1")
+    recs = _records(tmp_path)
+    assert [r["traced"] for r in recs] == [[["x", "XᵀX − Iᵣ", "X^T X - I_r"]]], out.output
+    md = (tmp_path / "rep" / "verification.md").read_text(encoding="utf-8")
+    assert "- x: XᵀX − Iᵣ" in md
