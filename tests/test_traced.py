@@ -131,3 +131,14 @@ def test_a_forged_answer_line_is_visible_in_the_report(tmp_path):
     assert [r["traced"] for r in recs] == [[["x", "XᵀX − Iᵣ", "X^T X - I_r"]]], out.output
     md = (tmp_path / "rep" / "verification.md").read_text(encoding="utf-8")
     assert "- x: XᵀX − Iᵣ" in md
+
+
+def test_the_appendix_constants_are_written_as_letters(tmp_path):
+    """E₁, Π₁, S₁ (stiefelsym.twisted's constant matrices) print as the letters of their docstrings, also on a
+    point of the claim's own, never as a call with the scene among its arguments."""
+    out = _invoke(tmp_path, "show", "block-jensen-hamiltonian")
+    assert out.exit_code == 0 and "⟨Ψ − Π₁ΨΠ₁, Π₁ηΠ₁⟩" in out.output and "block_projector" not in out.output
+    out = _invoke(tmp_path, "show", "magnetic-grassmannian-flow")
+    assert out.exit_code == 0 and "ṖE₁" in out.output and "basis_vector" not in out.output
+    out = _invoke(tmp_path, "show", "manakov-reflections")
+    assert out.exit_code == 0 and "S₁X" in out.output and "reflection(" not in out.output

@@ -205,6 +205,32 @@ _VULGAR = {Fraction(1, 2): "½", Fraction(1, 3): "⅓", Fraction(2, 3): "⅔", F
            Fraction(3, 4): "¾", Fraction(1, 8): "⅛"}
 
 
+def _prim_letter(name: str, args: list) -> tuple[str, str] | None:
+    """The letter the appendix's constant matrices (:mod:`stiefelsym.twisted`) are written with: E₁ = the
+    first basis vector of ℝʳ, Eᵣ, (E₁…Eᵣ₋₁), the block projectors Π₁ = diag(I_{r₁}, 0) and Π₂ = diag(0, I_{r₂}),
+    the reflection S₁, the projector D onto an eigenspace of A, D_k, and the kernel frame W and annihilator K;
+    None for another step (written as a function call) or arguments that are not small ints."""
+    if not all(type(v) is int and 0 <= v < 1000 for v in args):
+        return None
+    sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+    if not args:
+        return {"last_basis_vector": ("Eᵣ", "E_r"), "leading_basis_vectors": ("(E₁…Eᵣ₋₁)", r"(E_1\dots E_{r-1})"),
+                "reflection": ("S₁", "S_1"), "eigenspace_projector": ("D", "D"), "kernel_frame": ("W", "W"),
+                "kernel_annihilator": ("K", "K")}.get(name)
+    if len(args) != 1:
+        return None
+    k = args[0]
+    if name == "basis_vector":
+        return f"E{str(k + 1).translate(sub)}", f"E_{{{k + 1}}}"
+    if name == "block_projector" and k in (0, 1):
+        return f"Π{str(k + 1).translate(sub)}", rf"\Pi_{{{k + 1}}}"
+    if name == "first_basis_vectors":
+        return f"(E₁…E{str(k).translate(sub)})", rf"(E_1\dots E_{{{k}}})"
+    if name == "coordinate_projector":
+        return f"D{str(k).translate(sub)}", f"D_{{{k}}}"
+    return None
+
+
 def _tex_word(s: str) -> str:
     return "".join("\\" + c if c in "_&%$#{}" else c for c in s)
 
@@ -319,8 +345,14 @@ class Reader:
             return self._call(a[1], a[2], a[3])
         if op == "prim":
             short = a[0].qualname.rsplit(".", 1)[-1]
-            return func(short, [x(v) for v in a[1:] if not (self._is(v, "kw") or self._is(v, "scene"))]
-                        + self._kws(a[1:]))
+            vals = [v for v in a[1:] if not (self._is(v, "kw") or self._is(v, "scene"))]
+            # a constant matrix of the appendix is the same letter on every scene (a point of the claim's own too)
+            consts = [v for v in vals if not self._is(v, "prim") or
+                      self.g.args[v.i][0].qualname.rsplit(".", 1)[-1] != "at_point"]
+            letter = _prim_letter(short, consts) if len(consts) == len(a) - 2 else None
+            if letter is not None:
+                return atom(*letter)
+            return func(short, [x(v) for v in vals] + self._kws(a[1:]))
         if op == "apply":
             return _mk("apply", (), [x(a[0])] + [x(v) for v in a[1:] if not self._is(v, "kw")] + self._kws(a[1:]))
         if op == "add":
