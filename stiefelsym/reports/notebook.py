@@ -45,7 +45,10 @@ def _md_witness(r: Result) -> list[str]:
 def result_markdown(r: Result) -> str:
     r = R.readable_results([r])[0]
     head = f"**{R._md_cell(R.case_name(r))}** {R._md_cell(R.labels(r.paper))}: {R._md_cell(r.title)}"
-    return "\n".join([head, ""] + R._md_results([r]) + _md_witness(r)).rstrip() + "\n"
+    traced = (["As traced (what the method evaluated):", ""]
+              + [f"- {R._md_escape(name) + ': ' if name else ''}{R._md_escape(text)}" for name, text, _ in r.traced]
+              + [""]) if r.traced else []
+    return "\n".join([head, ""] + R._md_results([r]) + traced + _md_witness(r)).rstrip() + "\n"
 
 
 def results_markdown(results: Sequence[Result]) -> str:
