@@ -142,3 +142,15 @@ def test_the_appendix_constants_are_written_as_letters(tmp_path):
     assert out.exit_code == 0 and "ṖE₁" in out.output and "basis_vector" not in out.output
     out = _invoke(tmp_path, "show", "manakov-reflections")
     assert out.exit_code == 0 and "S₁X" in out.output and "reflection(" not in out.output
+
+
+def test_report_refuses_an_edited_text_of_a_catalog_claim(tmp_path):
+    out = _invoke(tmp_path, "verify", "euclidean-flow", "--size", "2,1", "--method", "exact", "--report-dir", "rep",
+                  "--jobs", "1")
+    assert out.exit_code == 0, out.output
+    payload = json.loads((tmp_path / "rep" / "results.json").read_text(encoding="utf-8"))
+    payload["results"][0]["traced"][0][1] = "Ẋ − 2P"
+    (tmp_path / "forged.json").write_text(json.dumps(payload), encoding="utf-8")
+    out = _invoke(tmp_path, "report", "--results", "forged.json", "--report-dir", "forged")
+    assert out.exit_code == 2 and "outputs as traced are not what its graph computes" in out.output, out.output
+    assert not (tmp_path / "forged").exists()
