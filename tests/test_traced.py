@@ -71,7 +71,7 @@ def test_the_reports_print_the_outputs_as_traced(run):
     md = (run / "rep" / "verification.md").read_text(encoding="utf-8")
     assert "one graph for every size run" in md and "- orth: XᵀX − Iᵣ" in md
     # a claim traced at each size: the smallest size's graph, and how many graphs there are
-    assert "at (2,1), the smallest size run; the claim has a graph at each size, 2 in all" in md
+    assert "at (2,1), the smallest size whose graph was read back; the claim has a graph at each size, 2 in all" in md
     tex = (run / "rep" / "verification.tex").read_text(encoding="utf-8")
     assert r"\item orth: $X^T X - I_r$" in tex
 
@@ -154,3 +154,27 @@ def test_report_refuses_an_edited_text_of_a_catalog_claim(tmp_path):
     out = _invoke(tmp_path, "report", "--results", "forged.json", "--report-dir", "forged")
     assert out.exit_code == 2 and "outputs as traced are not what its graph computes" in out.output, out.output
     assert not (tmp_path / "forged").exists()
+
+
+def test_a_large_graph_is_named_by_its_size_and_the_report_prints_a_smaller_one(tmp_path, monkeypatch):
+    """A graph of more nodes than TRACED_NODES is not read back (about 70 µs a node); the report prints the smallest
+    size whose graph was."""
+    import stiefelsym.run.runner as runner
+    from stiefelsym.claims import load_claims_file
+    (tmp_path / "mine.py").write_text(CLAIMS, encoding="utf-8")
+    c = next(c for c in load_claims_file(tmp_path / "mine.py") if c.id == "mine-entry")
+    from stiefelsym.claims import Size
+    small = runner.traced_text(c, Size(2, 1))
+    monkeypatch.setattr(runner, "TRACED_NODES", 5)
+    runner._TRACED.clear()
+    big = runner.traced_text(c, Size(3, 1))
+    assert small[0][0] == "x11" and big[0][0] == "" and big[0][1].startswith("(a graph of ")
+    from stiefelsym.reports.report import ClaimResults
+    from stiefelsym.results import Result
+    recs = [Result(claim="mine-entry", paper=[], section="", kind="id", title="", statement="", n=n, r=1,
+                   method="exact", verdict="proved", expected=True, seconds=None, seed=None, digest=f"d{n}",
+                   traced=t) for n, t in ((3, big), (4, big), (2, small))]
+    cr = ClaimResults(recs[0])
+    for r in recs:
+        cr.add(r)
+    assert cr.traced() == ("(2,1)", small, 3)

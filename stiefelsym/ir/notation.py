@@ -780,6 +780,8 @@ def traced_outputs(g: Graph, cap: int = TRACED_CAP) -> list[tuple[str, str, str]
 
 
 NO_NOTATION = "(no notation)"
+#: how the text of a graph too large to read back begins (:func:`stiefelsym.run.runner.traced_text`)
+NOT_READ_BACK = "(a graph of"
 
 
 # ---------------------------------------------------------------------------------------------

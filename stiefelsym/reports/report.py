@@ -239,7 +239,7 @@ def telling(changes: list[dict[str, str]]) -> list[dict[str, str]]:
 def traced_intro(where: str, graphs: int) -> str:
     """The words before a claim's outputs as traced (:meth:`ClaimResults.traced`)."""
     at = ("one graph for every size run" if not where else f"at {where}" if graphs == 1 else
-          f"at {where}, the smallest size run; the claim has a graph at each size, {graphs} in all")
+          f"at {where}, the smallest size whose graph was read back; the claim has a graph at each size, {graphs} in all")
     return ("As traced (what every method evaluated, read back from the claim's graph, never from its code; "
             f"{at})")
 
@@ -325,7 +325,9 @@ class ClaimResults:
         if not rs:
             return "", [], 0
         graphs = len({r.digest for r in rs})
-        sized = sorted((r for r in rs if r.n is not None), key=lambda r: _size_key((r.n, r.r)))
+        # the smallest size whose graph was read back (a graph of tens of thousands of nodes is only named)
+        sized = sorted((r for r in rs if r.n is not None),
+                       key=lambda r: (r.traced[0][1].startswith(notation.NOT_READ_BACK), _size_key((r.n, r.r))))
         if graphs == 1:
             return ("" if len(rs) > 1 or not sized else sized[0].size), rs[0].traced, 1
         return sized[0].size, sized[0].traced, graphs

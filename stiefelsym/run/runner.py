@@ -324,7 +324,7 @@ def traced_text(claim: Claim, size: Size | None, func: Callable | None = None) -
     the record's digest names; [] when the claim does not trace there.  A claim the dimension-free method
     takes on families of sizes has each family's outputs, named with the family."""
     from stiefelsym.ir import _compiled_graph as compile_claim
-    from stiefelsym.ir.notation import traced_outputs
+    from stiefelsym.ir.notation import NOT_READ_BACK, traced_outputs
     from stiefelsym.methods.families import size_families, stated_on
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -350,6 +350,11 @@ def traced_text(claim: Claim, size: Size | None, func: Callable | None = None) -
     for fam, g in graphs:
         key = g.digest()
         text = _TRACED.get(key)
+        if text is None and len(g.ops) > TRACED_NODES:
+            # reading a graph back costs about 70 µs a node: one of tens of thousands (entries read one by one at
+            # a large size) is named by its size only; the smallest size's graph is the one a report prints
+            words = f"{NOT_READ_BACK} {len(g.ops):,} nodes, not read back)"
+            text = _TRACED[key] = [["", words, r"\text{" + words.replace(",", "{,}") + "}"]]
         if text is None:
             text = _TRACED[key] = [list(t) for t in traced_outputs(g)]
             while len(_TRACED) > CHANGES_CACHE_SIZE:
@@ -360,6 +365,9 @@ def traced_text(claim: Claim, size: Size | None, func: Callable | None = None) -
 
 #: the outputs of a graph in the paper's notation (:func:`traced_text`), keyed by its digest
 _TRACED: dict[str, list[list[str]]] = {}
+#: a graph of more nodes than this is not read back (:func:`traced_text`); its text begins with
+#: :data:`stiefelsym.ir.notation.NOT_READ_BACK`
+TRACED_NODES = 1500
 
 
 def graph_change(claim: Claim, func: Callable, size: Size | None) -> list[dict[str, str]]:
