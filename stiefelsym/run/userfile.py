@@ -775,21 +775,34 @@ def _zygote(ctl: int, sock: int) -> None:
 
 
 #: unshare(2) flags: a user namespace (with all capabilities in it, so that the others need no privilege
-#: outside), a PID namespace for the children, a mount namespace, an IPC namespace
+#: outside), a PID namespace for the children, a mount namespace, an IPC namespace, a network namespace
 CLONE_NEWUSER, CLONE_NEWPID, CLONE_NEWNS, CLONE_NEWIPC = 0x10000000, 0x20000000, 0x00020000, 0x08000000
+CLONE_NEWNET = 0x40000000
+JOB_NAMESPACES = CLONE_NEWUSER | CLONE_NEWPID | CLONE_NEWNS | CLONE_NEWIPC | CLONE_NEWNET
 #: mount(2) flags of the job's own /proc (at least those of the /proc it hides: lock_down made it read-only)
 PROC_FLAGS = 1 | 2 | 4 | 8      # MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC
 
 
+def _own_stdin() -> None:
+    """A standard input of this process's own, at its end (an empty pipe whose writing end is closed): the zygote's
+    /dev/null was one open file of every job, and a lock a job set on it (F_OFD_SETLK) outlived the job, listed in
+    /proc/locks to the jobs after it (stop 86's sweep).  (The confined file system has no /dev/null to open.)"""
+    r, w = os.pipe()
+    os.close(w)
+    os.dup2(r, 0)
+    os.close(r)
+
+
 def _starter(ctl: int, sock: int) -> int:
     """A child of the zygote: it takes the job's pipes, writes its pid on the answer pipe, and forks the process that
-    does the job.  In namespaces (:data:`stiefelsym.run.sandbox.CONFINED`) it enters new user, PID, mount and IPC
-    namespaces first, so that the job is process 1 of a PID namespace of its own, with a /proc of its own and no
-    System V object of another job: every job sees the same process ids and no other process, neither the tracing
-    process (whose /proc/1/status counted the jobs it had waited for) nor the pids the jobs before it took (stop
-    85's sweep: one function under two ids read that count).  It writes the job's wait status last, once the job's
-    process (and, in its namespace, every process the job started) has ended; this process runs nothing of the
-    file."""
+    does the job.  In namespaces (:data:`stiefelsym.run.sandbox.CONFINED`) it enters new user, PID, mount, IPC and
+    network namespaces first, so that the job is process 1 of a PID namespace of its own, with a /proc of its own, no
+    System V object of another job and network counters of its own: every job sees the same process ids and no other
+    process, neither the tracing process (whose /proc/1/status counted the jobs it had waited for) nor the pids the
+    jobs before it took (stop 85's sweep: one function under two ids read that count), and /proc/net/snmp, which a
+    datagram sent to the loopback raises, counts nothing of another job (stop 86's sweep).  A job whose namespaces
+    cannot be made does not run.  It writes the job's wait status last, once the job's process (and, in its
+    namespace, every process the job started) has ended; this process runs nothing of the file."""
     import ctypes
     import socket
     from stiefelsym.run import sandbox
@@ -804,7 +817,14 @@ def _starter(ctl: int, sock: int) -> int:
     req, ans = fds
     write_fully(ans, PID_MARK + str(os.getpid()).encode() + b"\n")
     libc = ctypes.CDLL(None, use_errno=True)
-    alone = sandbox.CONFINED and libc.unshare(CLONE_NEWUSER | CLONE_NEWPID | CLONE_NEWNS | CLONE_NEWIPC) == 0
+    alone = sandbox.CONFINED and libc.unshare(JOB_NAMESPACES) == 0
+    if sandbox.CONFINED and not alone:
+        # the interpreter runs in namespaces, so the job's own can be made; a job that could not have them does
+        # not run outside them (it would see the tracing process and what the jobs before it left)
+        err = ctypes.get_errno()
+        write_fully(ans, json.dumps({"failed": "the job's own namespaces (user, PID, mount, IPC, network) could not "
+                                               f"be made: {os.strerror(err)}"}).encode() + b"\n")
+        return 1
     with Confined():        # (without namespaces: what the job leaves is ended here)
         job = os.fork()
         if job == 0:
@@ -813,6 +833,7 @@ def _starter(ctl: int, sock: int) -> int:
                 _die_with_parent()
                 if alone and libc.mount(b"proc", b"/proc", b"proc", ctypes.c_ulong(PROC_FLAGS), None) != 0:
                     os._exit(1)         # no job in a namespace whose /proc still shows the tracing process
+                _own_stdin()
                 os.dup2(ans, 1)
                 os.dup2(ans, 2)
                 line = b""
@@ -863,9 +884,21 @@ def _forward(line: bytes) -> None:
     if line.startswith(PID_MARK) or line.startswith(STATUS_MARK) or line == IMPORTED_MARK:
         return
     try:
-        write_fully(2, line + b"\n")
+        write_fully(2, _shown(line) + b"\n")
     except OSError:
         pass
+
+
+#: the control characters a file's print may not pass on to a terminal (all but the tab): C0, DEL and C1
+_CONTROLS = {c: f"\\x{c:02x}" for c in [*range(0x20), 0x7F, *range(0x80, 0xA0)] if c != 0x09}
+
+
+def _shown(line: bytes) -> bytes:
+    """A line the file printed, as the verifying process passes it on: its control characters written as escapes
+    (\\x1b ...), so that a file cannot move the cursor, clear or conceal a line of the run's own output in a
+    terminal, or print a verdict line over it (stop 86's sweep, M1)."""
+    text = line.decode("utf-8", "replace")
+    return text.translate(_CONTROLS).encode("utf-8")
 
 
 def _listed(path: str) -> dict:
