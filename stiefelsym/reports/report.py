@@ -236,12 +236,14 @@ def telling(changes: list[dict[str, str]]) -> list[dict[str, str]]:
     return changes
 
 
-def traced_intro(where: str, graphs: int) -> str:
+def traced_intro(where: str, graphs: int, expect: str = "holds") -> str:
     """The words before a claim's outputs as traced (:meth:`ClaimResults.traced`)."""
     at = ("one graph for every size run" if not where else f"at {where}" if graphs == 1 else
-          f"at {where}, the smallest size whose graph was read back; the claim has a graph at each size, {graphs} in all")
-    return ("As traced (what every method evaluated, read back from the claim's graph, never from its code; "
-            f"{at})")
+          f"at {where} (the claim has a graph at each size, {graphs} in all; shown: the smallest size with 1 < r < n, "
+          "else the smallest, whose graph was read back)")
+    stated = ("each residual is stated not to vanish identically" if expect == "nonzero" else
+              "each residual is stated to vanish; a rank or a count is shown as the equation stated")
+    return f"As traced (what every method evaluated, read back from the claim's graph, never from its code; {at}; {stated})"
 
 
 class ClaimResults:
@@ -325,9 +327,11 @@ class ClaimResults:
         if not rs:
             return "", [], 0
         graphs = len({r.digest for r in rs})
-        # the smallest size whose graph was read back (a graph of tens of thousands of nodes is only named)
+        # the smallest size with 1 < r < n (the generic case: at r = 1 or r = n blocks vanish or merge), else the
+        # smallest, whose graph was read back (a graph of tens of thousands of nodes is only named)
         sized = sorted((r for r in rs if r.n is not None),
-                       key=lambda r: (r.traced[0][1].startswith(notation.NOT_READ_BACK), _size_key((r.n, r.r))))
+                       key=lambda r: (r.traced[0][1].startswith(notation.NOT_READ_BACK), not 1 < r.r < r.n,
+                                      _size_key((r.n, r.r))))
         if graphs == 1:
             return ("" if len(rs) > 1 or not sized else sized[0].size), rs[0].traced, 1
         return sized[0].size, sized[0].traced, graphs
@@ -1066,7 +1070,7 @@ def _md_claim(c: ClaimResults) -> list[str]:
         out += [f"- {m}: {_md_escape(unicode_words(engine_words(text)))}" for m, text in how] + [""]
     where, traced, graphs = c.traced()
     if traced:
-        out += [f"{_md_escape(traced_intro(where, graphs))}:", ""]
+        out += [f"{_md_escape(traced_intro(where, graphs, c.expect))}:", ""]
         out += [f"- {_md_escape(name) + ': ' if name else ''}{_md_escape(text)}" for name, text, _tex in traced] + [""]
     if any(r.derivation and r.verdict == "proved" for r in c.printed):
         out += ["The dimension-free derivation (residual, rules applied, normal form) is in "
@@ -2088,7 +2092,7 @@ def _tex_traced(c: ClaimResults) -> list[str]:
     where, traced, graphs = c.traced()
     if not (traced and c.own):
         return []
-    return [tex_escape(traced_intro(where, graphs)) + ":"] + _tex_items(
+    return [tex_escape(traced_intro(where, graphs, c.expect)) + ":"] + _tex_items(
         [(tex_escape(f"{name}: ") if name else "")
          + (_tex_inline(tex) if math_ok(tex) and tex.isascii() else tex_escape(text)) for name, text, tex in traced])
 
