@@ -178,3 +178,29 @@ def test_a_large_graph_is_named_by_its_size_and_the_report_prints_a_smaller_one(
     for r in recs:
         cr.add(r)
     assert cr.traced() == ("(2,1)", small, 3)
+
+
+SPOOF = '''
+from stiefelsym import admissible, claim
+
+
+@claim("spoof-point", kind="id", sizes=admissible(n_max=3))
+def spoof_point(s):
+    """A generic matrix named X, Greek chi and 1: never printed as the point X or the number 1."""
+    G, H = s.generic("X", "n", "r"), s.generic("\\u03a7", "n", "r")
+    one = s.scalar("1")
+    return {"x": G.T @ G - s.Ir, "chi": H.T @ H - s.Ir, "one": one * s.X - s.X, "mine": s.scalar("mu") * s.X}
+'''
+
+
+def test_a_parameter_never_prints_as_an_engine_letter(tmp_path):
+    """A claim's own parameter whose name reads as a letter of the engine's (X, Y, xi, lam, E1), a number, or is not
+    ASCII (a Greek capital chi looks like X) is printed quoted: what the reports show as traced reads as the graph."""
+    from stiefelsym.claims import Size, load_claims_file
+    from stiefelsym.run.runner import traced_text
+    (tmp_path / "spoof.py").write_text(SPOOF, encoding="utf-8")
+    c = next(iter(load_claims_file(tmp_path / "spoof.py")))
+    text = {name: uni for name, uni, _tex in traced_text(c, Size(3, 2))}
+    assert text == {"x": "‘X’ᵀ‘X’ − Iᵣ", "chi": "‘Χ’ᵀ‘Χ’ − Iᵣ", "one": "‘1’X − X", "mine": "μX"}, text
+    tex = {name: t for name, _uni, t in traced_text(c, Size(3, 2))}
+    assert tex["chi"] == r"\mathtt{u03a7}^T \mathtt{u03a7} - I_r", tex

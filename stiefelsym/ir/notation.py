@@ -250,6 +250,32 @@ def name_atom(name: str) -> Expr:
     return atom(name, r"\mathrm{" + _tex_word(name) + "}")
 
 
+#: the texts of the engine's own letters (the point, A, the momenta, the second point, the parameters the scene
+#: offers, the appendix's constant matrices): a claim's own parameter never prints as one of them
+_ENGINE_TEXTS = frozenset(u for u, _ in LETTERS.values()) | {"a", "s", "u", "Eᵣ", "Π₁", "Π₂", "S₁", "D", "W", "K", "C"}
+#: the engine's letters with a numbered subscript: E₁ (basis vectors), D₂, u₂ (a function's arguments), a₁ (A's
+#: eigenvalues), b₁
+_ENGINE_NUMBERED = re.compile("[EDuab][₀₁₂₃₄₅₆₇₈₉]+")
+#: the names a claim's parameter prints plainly: ASCII letters, then digits (with an underscore or not)
+_PLAIN_NAME = re.compile(r"[A-Za-z]+(_?\d+)?")
+
+
+def param_atom(name: str) -> Expr:
+    """A parameter the claim named (s.scalar, s.generic, s.general_params, s.sym_operator), as :func:`name_atom`
+    prints it, unless that text could be read as something else: the name of an engine's letter (a generic matrix
+    named "X" or "Y" is not the point X nor the second point Y; "xi" is not the scene's ξ), a number ("1"), or a
+    name that is not ASCII letters and digits (a Greek capital chi looks like X): such a name is printed quoted,
+    ‘X’ (in LaTeX in typewriter letters), so that what the reports show as traced reads as the graph it is."""
+    e = name_atom(name)
+    u = e.data[0]
+    if type(name) is str and _PLAIN_NAME.fullmatch(name) and u not in _ENGINE_TEXTS \
+            and not _ENGINE_NUMBERED.fullmatch(u):
+        return e
+    text = "".join(c if c.isprintable() else f"\\x{ord(c):02x}" for c in str(name)[:40]) + "…" * (len(str(name)) > 40)
+    safe = "".join(c if c.isascii() and (c.isalnum() or c in "_-") else f"u{ord(c):04x}" for c in str(name)[:40])
+    return atom(f"‘{text}’", r"\mathtt{" + _tex_word(safe or "-") + "}")
+
+
 def _size_text(m: Any) -> tuple[str, str]:
     if type(m) is Size:
         return m.text(), m.text()
@@ -481,7 +507,7 @@ class Reader:
         if name == "const":
             return num(args[0])
         if name in ("scalar", "generic", "general_params", "sym_operator"):
-            return name_atom(args[0])
+            return param_atom(args[0])
         if name == "fresh":    # a fresh element, numbered by the engine: w̃ᵢ (no name of a claim's spells it)
             return atom("w\u0303" + str(args[0]).translate(_SUB_DIGITS), r"\tilde w_{" + str(args[0]) + "}")
         if name == "zeros":
