@@ -204,3 +204,11 @@ def test_a_parameter_never_prints_as_an_engine_letter(tmp_path):
     assert text == {"x": "‘X’ᵀ‘X’ − Iᵣ", "chi": "‘Χ’ᵀ‘Χ’ − Iᵣ", "one": "‘1’X − X", "mine": "μX"}, text
     tex = {name: t for name, _uni, t in traced_text(c, Size(3, 2))}
     assert tex["chi"] == r"\mathtt{u03a7}^T \mathtt{u03a7} - I_r", tex
+
+
+def test_a_function_named_like_a_letter_is_quoted():
+    from stiefelsym.ir.graph import Named
+    from stiefelsym.ir.notation import Reader, unicode
+    from stiefelsym.ir.graph import Graph
+    rd = Reader(Graph.__new__(Graph))
+    assert unicode(rd.arg(Named("mine.X"))) == "‘X’" and unicode(rd.arg(Named("mine.energy"))) == "energy"

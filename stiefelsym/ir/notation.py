@@ -254,8 +254,8 @@ def name_atom(name: str) -> Expr:
 #: offers, the appendix's constant matrices): a claim's own parameter never prints as one of them
 _ENGINE_TEXTS = frozenset(u for u, _ in LETTERS.values()) | {"a", "s", "u", "Eᵣ", "Π₁", "Π₂", "S₁", "D", "W", "K", "C"}
 #: the engine's letters with a numbered subscript: E₁ (basis vectors), D₂, u₂ (a function's arguments), a₁ (A's
-#: eigenvalues), b₁
-_ENGINE_NUMBERED = re.compile("[EDuab][₀₁₂₃₄₅₆₇₈₉]+")
+#: eigenvalues)
+_ENGINE_NUMBERED = re.compile("[EDua][₀₁₂₃₄₅₆₇₈₉]+")
 #: the names a claim's parameter prints plainly: ASCII letters, then digits (with an underscore or not)
 _PLAIN_NAME = re.compile(r"[A-Za-z]+(_?\d+)?")
 
@@ -271,6 +271,11 @@ def param_atom(name: str) -> Expr:
     if type(name) is str and _PLAIN_NAME.fullmatch(name) and u not in _ENGINE_TEXTS \
             and not _ENGINE_NUMBERED.fullmatch(u):
         return e
+    return _quoted(name)
+
+
+def _quoted(name: Any) -> Expr:
+    """A name printed quoted, ‘name’ (in LaTeX in typewriter letters, ASCII only), its control characters escaped."""
     text = "".join(c if c.isprintable() else f"\\x{ord(c):02x}" for c in str(name)[:40]) + "…" * (len(str(name)) > 40)
     safe = "".join(c if c.isascii() and (c.isalnum() or c in "_-") else f"u{ord(c):04x}" for c in str(name)[:40])
     return atom(f"‘{text}’", r"\mathtt{" + _tex_word(safe or "-") + "}")
@@ -338,7 +343,9 @@ class Reader:
             return atom(a.text())
         if t is Named:
             short = a.qualname.rsplit(".", 1)[-1]
-            return atom(short, r"\mathrm{" + _tex_word(short) + "}")
+            if _PLAIN_NAME.fullmatch(short) and short not in _ENGINE_TEXTS and len(short) > 1:
+                return atom(short, r"\mathrm{" + _tex_word(short) + "}")
+            return _quoted(short)       # (a one-letter function name reads as a letter: quoted)
         if t is tuple:
             return _mk("tuple", (), [self.arg(x) for x in a])
         return atom(repr(a))
