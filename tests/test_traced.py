@@ -212,3 +212,4 @@ def test_a_function_named_like_a_letter_is_quoted():
     from stiefelsym.ir.graph import Graph
     rd = Reader(Graph.__new__(Graph))
     assert unicode(rd.arg(Named("mine.X"))) == "‘X’" and unicode(rd.arg(Named("mine.energy"))) == "energy"
+

@@ -174,6 +174,11 @@ def indexed_by_Rn(tags) -> bool:
 def _space_text(tag: str) -> str:
     d = definite(tag)
     if d is None:
+        parts = tag.split("+")
+        if len(parts) > 1 and all(p in ("n", "r", "n-r") for p in parts):
+            # a block's sum of spaces: R^r + R^(n-r) is not R^n (splitting R^n so is a choice of coordinates)
+            return "the sum " + " + ".join("R^" + (p if len(p) == 1 else f"({p})") for p in parts) + \
+                " (never R^n: splitting R^n so is a choice of coordinates)"
         return "an untyped index" if tag == UNTYPED else f"the coordinate space {tag!r}"
     return "R^" + "+".join(d) if len(d) > 1 else "R^" + d[0]
 

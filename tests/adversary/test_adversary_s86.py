@@ -72,3 +72,12 @@ def test_control_characters_of_a_files_prints_are_escaped():
     out = _run(S86 / "h1" / "m_escape.py", "--size", "3,1", "--method", "exact")
     assert "\x1b" not in out.stderr and "\\x1b[1A" in out.stderr, out.stderr[-2000:]
     assert [r["verdict"] for r in json.loads(out.stdout)["results"]] == ["fails"]
+
+
+def test_a_block_over_r_and_n_minus_r_is_never_rn_and_says_why():
+    """h1 F1: X0 = (I_r; 0) typed R^r + R^(n-r) times X is refused (the types differ: splitting R^n is a choice of
+    coordinates, the route of class 1); the message names the spaces, not an internal tag."""
+    recs = json.loads(_run(S86 / "h1" / "pub_tricks2.py", "pb-x0block-f", "--size", "3,1",
+                           "--method", "exact").stdout)["results"]
+    assert [r["verdict"] for r in recs] == ["error"]
+    assert "the sum R^r + R^(n-r) (never R^n" in recs[0]["message"], recs[0]["message"]
