@@ -213,3 +213,12 @@ def test_a_function_named_like_a_letter_is_quoted():
     rd = Reader(Graph.__new__(Graph))
     assert unicode(rd.arg(Named("mine.X"))) == "‘X’" and unicode(rd.arg(Named("mine.energy"))) == "energy"
 
+
+
+def test_show_at_a_large_size_ends_within_its_budget(tmp_path, monkeypatch):
+    """A claim that needs fixed sizes runs its own loops at the size asked: `show --size 60,60` is budgeted, never a
+    hang."""
+    from stiefelsym import cli
+    monkeypatch.setattr(cli, "SHOW_SECONDS", 1.0)
+    out = _invoke(tmp_path, "show", "dual-lax-determines-the-point", "--size", "60,60")
+    assert out.exit_code == 0 and "the trace did not end within 1 s at this size" in out.output, out.output

@@ -1128,20 +1128,50 @@ def show(claim_id: str, claims_files: tuple[str, ...], size: Any = None) -> None
     _show_traced(c, size)
 
 
+#: the budget of `show`'s trace (seconds, and GiB of memory): a claim traced at a large size by its own loops
+SHOW_SECONDS, SHOW_GIB = 20.0, 4.0
+
+
 def _show_traced(c: Any, size: Any) -> None:
     """The claim's outputs as traced (:func:`stiefelsym.run.runner.traced_text`): at ``size``, else with
-    symbolic sizes, else at its smallest size; a claim that does not trace says so."""
+    symbolic sizes, else at its smallest size; a claim that does not trace says so.  The trace runs in a child with
+    a budget of time and memory (a claim that needs fixed sizes runs its own loops at the size asked)."""
+    from stiefelsym.run.isolate import ChildDied, ChildError, HardTimeout, run_isolated
     from stiefelsym.run.runner import traced_text
-    where, traced = (f"({size.n},{size.r})", traced_text(c, size)) if size is not None else ("every size", traced_text(c, None))
-    if not traced and size is None and len(c.sizes):
+
+    def trace() -> tuple[str, list]:
+        _memory_limit(SHOW_GIB)
+        if size is not None:
+            return f"({size.n},{size.r})", traced_text(c, size)
+        found = traced_text(c, None)
+        if found or not len(c.sizes):
+            return "every size", found
         low = min(c.sizes, key=lambda z: (z.n, z.r))
-        where, traced = f"({low.n},{low.r})", traced_text(c, low)
+        return f"({low.n},{low.r})", traced_text(c, low)
+
+    try:
+        where, traced = run_isolated(trace, SHOW_SECONDS, lambda exc: f"{type(exc).__name__}: {exc}")
+    except HardTimeout:
+        click.echo(f"traced:      (the trace did not end within {SHOW_SECONDS:.0f} s at this size)")
+        return
+    except (ChildDied, ChildError) as exc:
+        click.echo(f"traced:      (the trace ended without a graph: {_one_line(str(exc))})")
+        return
     if not traced:
         click.echo("traced:      (the claim does not trace here: `stiefelsym verify` says why)")
         return
     click.echo(f"traced:      at {where}, read back from the claim's graph:")
     for name, text, _tex in traced:
         click.echo(f"  {name + ': ' if name else ''}{text}")
+
+
+def _memory_limit(gib: float) -> None:
+    """This process's address space limited to ``gib`` GiB (where the system has RLIMIT_AS)."""
+    try:
+        import resource
+        resource.setrlimit(resource.RLIMIT_AS, (int(gib * (1 << 30)),) * 2)
+    except (ImportError, ValueError, OSError):
+        pass
 
 
 @main.command()
