@@ -208,7 +208,8 @@ _VULGAR = {Fraction(1, 2): "½", Fraction(1, 3): "⅓", Fraction(2, 3): "⅔", F
 def _prim_letter(name: str, args: list) -> tuple[str, str] | None:
     """The letter the appendix's constant matrices (:mod:`stiefelsym.twisted`) are written with: E₁ = the
     first basis vector of ℝʳ, Eᵣ, (E₁…Eᵣ₋₁), the block projectors Π₁ = diag(I_{r₁}, 0) and Π₂ = diag(0, I_{r₂}),
-    the reflection S₁, the projector D onto an eigenspace of A, D_k, and the kernel frame W and annihilator K;
+    the reflection S₁, the projector D onto an eigenspace of A, D_k, the kernel frame W and annihilator K, and the
+    magnetic form's F = E₁∧E₂;
     None for another step (written as a function call) or arguments that are not small ints."""
     if not all(type(v) is int and 0 <= v < 1000 for v in args):
         return None
@@ -216,7 +217,7 @@ def _prim_letter(name: str, args: list) -> tuple[str, str] | None:
     if not args:
         return {"last_basis_vector": ("Eᵣ", "E_r"), "leading_basis_vectors": ("(E₁…Eᵣ₋₁)", r"(E_1\dots E_{r-1})"),
                 "reflection": ("S₁", "S_1"), "eigenspace_projector": ("D", "D"), "kernel_frame": ("W", "W"),
-                "kernel_annihilator": ("K", "K")}.get(name)
+                "kernel_annihilator": ("K", "K"), "magnetic_matrix": ("F", "F")}.get(name)
     if len(args) != 1:
         return None
     k = args[0]
@@ -252,7 +253,8 @@ def name_atom(name: str) -> Expr:
 
 #: the texts of the engine's own letters (the point, A, the momenta, the second point, the parameters the scene
 #: offers, the appendix's constant matrices): a claim's own parameter never prints as one of them
-_ENGINE_TEXTS = frozenset(u for u, _ in LETTERS.values()) | {"a", "s", "u", "Eᵣ", "Π₁", "Π₂", "S₁", "D", "W", "K", "C"}
+_ENGINE_TEXTS = frozenset(u for u, _ in LETTERS.values()) | {"a", "s", "u", "Eᵣ", "Π₁", "Π₂", "S₁", "D", "W", "K", "C",
+                                                              "F"}
 #: the engine's letters with a numbered subscript: E₁ (basis vectors), D₂, u₂ (a function's arguments), a₁ (A's
 #: eigenvalues)
 _ENGINE_NUMBERED = re.compile("[EDua][₀₁₂₃₄₅₆₇₈₉]+")

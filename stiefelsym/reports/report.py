@@ -241,9 +241,9 @@ def traced_intro(where: str, graphs: int, expect: str = "holds") -> str:
     at = ("one graph for every size run" if not where else f"at {where}" if graphs == 1 else
           f"at {where} (the claim has a graph at each size, {graphs} in all; shown: the smallest size with 1 < r < n, "
           "else the smallest, whose graph was read back)")
-    stated = ("each residual is stated not to vanish identically" if expect == "nonzero" else
-              "each residual is stated to vanish; a rank or a count is shown as the equation stated")
-    return f"As traced (what every method evaluated, read back from the claim's graph, never from its code; {at}; {stated})"
+    stated = "each residual is stated not to vanish identically" if expect == "nonzero" else \
+        "each residual is stated to vanish"
+    return f"As traced (what every method evaluated, read back from the claim's graph, not its code; {at}; {stated})"
 
 
 class ClaimResults:
@@ -2094,7 +2094,13 @@ def _tex_traced(c: ClaimResults) -> list[str]:
         return []
     return [tex_escape(traced_intro(where, graphs, c.expect)) + ":"] + _tex_items(
         [(tex_escape(f"{name}: ") if name else "")
-         + (_tex_inline(tex) if math_ok(tex) and tex.isascii() else tex_escape(text)) for name, text, tex in traced])
+         + (_tex_inline(tex, always=True) if math_ok(tex) and tex.isascii() and len(text) <= TEX_TRACED_CHARS
+            else tex_escape(text).replace(")", r")\allowbreak{}")) for name, text, tex in traced])
+
+
+#: a formula as traced longer than this (characters of its Unicode text) is printed as that text in the LaTeX
+#: reports, which breaks across lines (its mathematics, set in one box, would be shrunk below legibility)
+TEX_TRACED_CHARS = 90
 
 
 def _tex_claim_brief(c: ClaimResults) -> list[str]:
@@ -2515,11 +2521,12 @@ def _tex_change(changes: Sequence[dict[str, str]] | None) -> str:
     return "; ".join(parts)
 
 
-def _tex_inline(math: str) -> str:
-    r"""Inline mathematics; one with ``\left … \right`` (which TeX cannot break across lines) is
+def _tex_inline(math: str, always: bool = False) -> str:
+    r"""Inline mathematics; one with ``\left … \right`` (which TeX cannot break across lines), or any with
+    ``always`` (a formula read back from a graph, whose subscripts and arguments TeX cannot break either), is
     shrunk to 0.9 of the line's width when it is wider, never an overfull line, and may begin a line with
     the line before it filled out (the glue ``\hfil``, cancelled by ``\hfilneg`` when no break is made)."""
-    if "\\left" not in math:
+    if "\\left" not in math and not always:
         return f"${math}$"
     # at most 0.9 of the line: the punctuation that follows it stays on its line
     return (r"\nobreak\hfil\penalty0\hfilneg\relax\resizebox{\ifdim\width>0.9\linewidth 0.9\linewidth\else\width\fi}{!}{$"
