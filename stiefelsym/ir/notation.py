@@ -268,6 +268,10 @@ def param_atom(name: str) -> Expr:
     named "X" or "Y" is not the point X nor the second point Y; "xi" is not the scene's ξ), a number ("1"), or a
     name that is not ASCII letters and digits (a Greek capital chi looks like X): such a name is printed quoted,
     ‘X’ (in LaTeX in typewriter letters), so that what the reports show as traced reads as the graph it is."""
+    m = re.fullmatch(r"Inverse([XY])(\d+)", str(name))
+    if m:       # the generic elements of an Inverse statement (a name no claim may take): x̃₁, ỹ₁
+        letter = m.group(1).lower()
+        return atom(letter + "\u0303" + m.group(2).translate(_SUB_DIGITS), rf"\tilde {letter}_{{{m.group(2)}}}")
     e = name_atom(name)
     u = e.data[0]
     if type(name) is str and _PLAIN_NAME.fullmatch(name) and u not in _ENGINE_TEXTS \
