@@ -187,7 +187,7 @@ def test_an_ill_typed_mutant_has_no_notation_and_dead_code_no_change():
     c = load_catalog().get("constraints-independent")
     right = next(m for m in mutants(c) if "change the coefficient 4 to 5" in m.description)
     assert changes_text(notation(c, right, Size(3, 2))) == (
-        "in rank d(F, G): ¼[ỹ₁ + ỹ₁ᵀ, XᵀP] → (1/5)[ỹ₁ + ỹ₁ᵀ, XᵀP]")
+        "in rank d(F, G): ¼[y\u0303₁ + y\u0303₁ᵀ, XᵀP] → (1/5)[y\u0303₁ + y\u0303₁ᵀ, XᵀP]")
 
 
 def _with_dead_code(s):
