@@ -93,8 +93,18 @@ def _cmd(tex: str) -> str:
 def one_line(text: Any, limit: int) -> bool:
     """Whether ``text`` is a string of 1 to ``limit`` characters with no line break or other control character:
     the words that head a line of the reports (a claim's section, labels and check names, a run's title), which
-    a line break would turn into a table, a heading or an HTML block of the report's own."""
-    return type(text) is str and 0 < len(text) <= limit and not re.search(r"[\x00-\x1f\x7f]", text)
+    a line break would turn into a table, a heading or an HTML block of the report's own.  Nor any invisible
+    character that changes how a line reads: a format character (the bidirectional overrides and isolates, which
+    display the rest of a line reversed, zero-width spaces and joiners), a line or paragraph separator, a C1
+    control, a private-use, surrogate or unassigned code point (stop 86: a check name ending with U+202E displayed
+    ": Ψ − XᵀP + PᵀX" as "XᵀP + PᵀX − Ψ :")."""
+    return type(text) is str and 0 < len(text) <= limit and not re.search(r"[\x00-\x1f\x7f-\x9f]", text) \
+        and not any(unicodedata.category(c) in _INVISIBLE for c in text if ord(c) > 0x7e)
+
+
+#: the Unicode categories :func:`one_line` refuses: format, line and paragraph separators, controls, surrogates,
+#: private use, unassigned
+_INVISIBLE = frozenset({"Cf", "Zl", "Zp", "Cc", "Cs", "Co", "Cn"})
 
 
 #: a short relation of running text, "r = 2", "n ≤ 2r + 1", "(n − r = 1": terms of a few characters joined by spaced

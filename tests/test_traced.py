@@ -71,7 +71,7 @@ def test_the_reports_print_the_outputs_as_traced(run):
     md = (run / "rep" / "verification.md").read_text(encoding="utf-8")
     assert "one graph for every size run" in md and "- orth: XᵀX − Iᵣ" in md
     # a claim traced at each size: the smallest size's graph, and how many graphs there are
-    assert "at (2,1) (the claim has a graph at each size, 2 in all; shown: the smallest size with 1" in md
+    assert "at (2,1) only: the claim's code reads the sizes, and each of its 2 sizes has a graph of its own" in md
     tex = (run / "rep" / "verification.tex").read_text(encoding="utf-8")
     assert r"\item orth: " in tex and r"{$X^T X - I_r$}" in tex
 
@@ -117,7 +117,7 @@ def test_show_prints_the_outputs_as_traced(tmp_path):
     out = _invoke(tmp_path, "show", "euclidean-flow")
     assert out.exit_code == 0 and "traced:      at every size" in out.output and "dP/dt: Ṗ + XPᵀP" in out.output
     out = _invoke(tmp_path, "show", "stiefel-corank-one")      # traced at fixed sizes: its smallest
-    assert out.exit_code == 0 and "traced:      at (2,1)" in out.output
+    assert out.exit_code == 0 and "traced:      at (2,1) only" in out.output
     out = _invoke(tmp_path, "show", "stiefel-corank-one", "--size", "9,1")
     assert out.exit_code == 2 and "not stated at (9,1)" in out.output
 
@@ -139,7 +139,7 @@ def test_the_appendix_constants_are_written_as_letters(tmp_path):
     out = _invoke(tmp_path, "show", "block-jensen-hamiltonian")
     assert out.exit_code == 0 and "⟨Ψ − Π₁ΨΠ₁, Π₁ηΠ₁⟩" in out.output and "block_projector" not in out.output
     out = _invoke(tmp_path, "show", "magnetic-grassmannian-flow")
-    assert out.exit_code == 0 and "ṖE₁" in out.output and "basis_vector" not in out.output
+    assert out.exit_code == 0 and "E₁" in out.output and "basis_vector" not in out.output
     out = _invoke(tmp_path, "show", "manakov-reflections")
     assert out.exit_code == 0 and "S₁X" in out.output and "reflection(" not in out.output
 
@@ -207,10 +207,14 @@ def test_a_parameter_never_prints_as_an_engine_letter(tmp_path):
 
 
 def test_a_function_named_like_a_letter_is_quoted():
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.ir import _compiled_graph
     from stiefelsym.ir.graph import Named
     from stiefelsym.ir.notation import Reader, unicode
-    from stiefelsym.ir.graph import Graph
-    rd = Reader(Graph.__new__(Graph))
+    from stiefelsym.scene import REALIZATIONS
+    c = next(c for c in load_catalog() if c.id == "euclidean-flow")
+    cons = REALIZATIONS[c.realization]
+    rd = Reader(_compiled_graph(c.func, None, None, (cons.name, cons.build)))
     assert unicode(rd.arg(Named("mine.X"))) == "‘X’" and unicode(rd.arg(Named("mine.energy"))) == "energy"
 
 

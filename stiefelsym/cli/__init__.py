@@ -1160,7 +1160,10 @@ def _show_traced(c: Any, size: Any) -> None:
     if not traced:
         click.echo("traced:      (the claim does not trace here: `stiefelsym verify` says why)")
         return
-    click.echo(f"traced:      at {where}, read back from the claim's graph:")
+    click.echo(f"traced:      at {where}, read back from the claim's graph:"
+               if where == "every size" or size is not None else
+               f"traced:      at {where} only (the claim's code reads the sizes: each size has a graph of its own, "
+               "--size n,r shows another), read back from the claim's graph:")
     for name, text, _tex in traced:
         click.echo(f"  {name + ': ' if name else ''}{text}")
 

@@ -251,32 +251,44 @@ def name_atom(name: str) -> Expr:
     return atom(name, r"\mathrm{" + _tex_word(name) + "}")
 
 
-#: the texts of the engine's own letters (the point, A, the momenta, the second point, the parameters the scene
-#: offers, the appendix's constant matrices): a claim's own parameter never prints as one of them
-_ENGINE_TEXTS = frozenset(u for u, _ in LETTERS.values()) | {"a", "s", "u", "Eᵣ", "Π₁", "Π₂", "S₁", "D", "W", "K", "C",
-                                                              "F"}
-#: the engine's letters with a numbered subscript: E₁ (basis vectors), D₂, u₂ (a function's arguments), a₁ (A's
-#: eigenvalues)
-_ENGINE_NUMBERED = re.compile("[EDua][₀₁₂₃₄₅₆₇₈₉]+")
-#: the names a claim's parameter prints plainly: ASCII letters, then digits (with an underscore or not)
-_PLAIN_NAME = re.compile(r"[A-Za-z]+(_?\d+)?")
+#: the letters of the engine's own matrices (the point, A, the momenta, the second point, the scene's elements, the
+#: multipliers, the appendix's constants, A's eigenvalues aᵢ, a function's arguments u): a claim's parameter named
+#: by one of them, with or without digits (P21 would read as the entry P₂₁, I2 as the identity I₂), is quoted
+_ENGINE_MATRIX_LETTERS = frozenset("XPAIEDSWKCFYQZauΦΨΛΠξζηθδds")
+#: the engine's scalars: a claim's parameter named so is quoted; with digits (λ₁, κ₀) it is a letter of its own
+_ENGINE_SCALAR_LETTERS = frozenset("λκε")
+#: the names a claim's parameter prints plainly: one Latin letter, or a Greek letter's name, then digits (with an
+#: underscore or not); AA and BB (𝔸, 𝔹).  Any other name (AX, tr, I_n, lam, a Greek capital chi) is quoted.
+_PLAIN_NAME = re.compile(r"([A-Za-z]|[A-Za-z]{2,7})(_?\d+)?")
 
 
-def param_atom(name: str) -> Expr:
+def _plain_text(name: str) -> str | None:
+    """The plain text of a claim's parameter (:func:`param_atom`), or None when it must be quoted."""
+    if name in ("AA", "BB"):
+        return name_atom(name).data[0]
+    m = _PLAIN_NAME.fullmatch(name)
+    if not m:
+        return None
+    base, digits = m.group(1), m.group(2)
+    letter = base if len(base) == 1 else GREEK.get(base)
+    if letter is None or len(letter) != 1 or letter in _ENGINE_MATRIX_LETTERS or \
+            (letter in _ENGINE_SCALAR_LETTERS and not digits):
+        return None
+    return name_atom(name).data[0]
+
+
+def param_atom(name: str, quote: bool = False) -> Expr:
     """A parameter the claim named (s.scalar, s.generic, s.general_params, s.sym_operator), as :func:`name_atom`
-    prints it, unless that text could be read as something else: the name of an engine's letter (a generic matrix
-    named "X" or "Y" is not the point X nor the second point Y; "xi" is not the scene's ξ), a number ("1"), or a
-    name that is not ASCII letters and digits (a Greek capital chi looks like X): such a name is printed quoted,
-    ‘X’ (in LaTeX in typewriter letters), so that what the reports show as traced reads as the graph it is."""
+    prints it when that text reads as nothing else (:func:`_plain_text`: G, B, V₁, μ, α, κ₀, 𝔸); otherwise, and
+    with ``quote`` (another of the graph's names prints the same: G1 and G_1 both as G₁), quoted ‘name’ (in LaTeX in
+    typewriter letters): a generic matrix named "X" is not the point X, "P21" not an entry of P, "I2" not an
+    identity, "AX" not a product, "tr" not a trace, "Lambda" not a flow's multiplier, a Greek capital chi not X."""
     m = re.fullmatch(r"Inverse([XY])(\d+)", str(name))
     if m:       # the generic elements of an Inverse statement (a name no claim may take): x̃₁, ỹ₁
         letter = m.group(1).lower()
         return atom(letter + "\u0303" + m.group(2).translate(_SUB_DIGITS), rf"\tilde {letter}_{{{m.group(2)}}}")
-    e = name_atom(name)
-    u = e.data[0]
-    if type(name) is str and _PLAIN_NAME.fullmatch(name) and u not in _ENGINE_TEXTS \
-            and not _ENGINE_NUMBERED.fullmatch(u):
-        return e
+    if not quote and type(name) is str and _plain_text(name) is not None:
+        return name_atom(name)
     return _quoted(name)
 
 
@@ -303,18 +315,82 @@ def identity(m: Any) -> Expr:
 # graph -> expressions
 
 
+#: the letters of the point and of what moves with it along a flow (read in a function's body from the claim's
+#: own scene, they are constants there: X₀)
+MOVING = frozenset({"X", "P", "Phi", "Psi", "Y", "Q", "Zc", "Zc_dot"})
+#: the steps that make a Hamiltonian's flow (calls of the scene, and twisted.flow), and how the legend names them
+FLOW_STEPS = {"dirac_flow": "the Dirac flow of", "canonical_flow": "the canonical flow of",
+              "multiplier_flow": "the flow with multipliers of", "flow": "the flow (twisted form) of"}
+
+
+def flow_nodes(g: Graph) -> list[int]:
+    """The nodes of the Hamiltonians' flows the graph differentiates along, reads the velocities or the
+    multipliers of, in the graph's order."""
+    found = set()
+    for op, a in zip(g.ops, g.args):
+        ref = a[2][1] if op == "call" and a[1] == "d" and len(a[2]) > 1 else \
+            a[0] if op == "attr" and a[1] in ("Xdot", "Pdot") else \
+            a[0] if op == "item" and a[1] in ("Lambda", "Pi") else None
+        if type(ref) is Ref and _flow_step(g, ref.i):
+            found.add(ref.i)
+    return sorted(found)
+
+
+def _flow_step(g: Graph, i: int) -> str:
+    """The flow step node i is ("" when it is none)."""
+    op, a = g.ops[i], g.args[i]
+    name = a[1] if op == "call" else a[0].qualname.rsplit(".", 1)[-1] if op == "prim" else ""
+    return name if name in FLOW_STEPS else ""
+
+
+#: the scene's steps that make a parameter the claim names
+PARAMETER_STEPS = ("scalar", "generic", "general_params", "sym_operator")
+
+
 class Reader:
     """The expressions of one graph's nodes (each node read once)."""
 
-    def __init__(self, g: Graph, twin: "Reader | None" = None) -> None:
+    def __init__(self, g: Graph, twin: "Reader | None" = None, outer: "Reader | None" = None) -> None:
         self.g = g
         self.memo: dict[int, Expr] = {}
+        #: the reader of the bodies of the graph's functions (made when one is read): there the point of the claim's
+        #: own scene is a constant, X₀ (a function differentiated along a flow moves its own scene's point only)
+        self.outer = outer
+        self._inner: "Reader | None" = None
+        # the flows the graph differentiates along (a Hamiltonian's flow, not a tangent given outright): with more
+        # than one, each is tagged ⁽ᵏ⁾ on its derivatives, dotted letters and multipliers
+        self.flows = outer.flows if outer is not None else flow_nodes(g)
+        # the claim's parameters whose plain texts coincide (G1 and G_1 both G₁): each printed quoted
+        texts: dict[str, set] = {}
+        for op, a in zip(g.ops, g.args):
+            if op == "call" and a[1] in PARAMETER_STEPS and a[2] and type(a[2][0]) is str:
+                text = _plain_text(a[2][0])
+                if text is not None:
+                    texts.setdefault(text, set()).add(a[2][0])
+        self.quote = {name for names in texts.values() if len(names) > 1 for name in names}
         # a graph read next to another (a mutant next to its claim): a node whose key the other graph
         # has is that graph's expression, read once
         self.twin = twin
         if twin is not None:
             self.keys = node_keys(g)
             self.twin_index = {k: i for i, k in enumerate(node_keys(twin.g))}
+
+    def flow_tag(self, ref: Any) -> tuple[str, str] | None:
+        """The tag (Unicode, LaTeX) of a flow node: "" for the graph's one flow, ⁽ᵏ⁾ among several; None for
+        anything else (a tangent given outright, printed with its components)."""
+        if type(ref) is not Ref or ref.i not in self.flows:
+            return None
+        if len(self.flows) == 1:
+            return "", ""
+        k = self.flows.index(ref.i) + 1
+        return f"⁽{str(k).translate(_SUP_DIGITS)}⁾", f"^{{({k})}}"
+
+    def inner(self) -> "Reader":
+        if self.outer is not None:
+            return self
+        if self._inner is None:
+            self._inner = Reader(self.g, outer=self)
+        return self._inner
 
     def node(self, i: int) -> Expr:
         if i not in self.memo:
@@ -349,7 +425,7 @@ class Reader:
             return atom(a.text())
         if t is Named:
             short = a.qualname.rsplit(".", 1)[-1]
-            if _PLAIN_NAME.fullmatch(short) and short not in _ENGINE_TEXTS and len(short) > 1:
+            if re.fullmatch(r"[A-Za-z][A-Za-z0-9]*_?[A-Za-z0-9_]*", short) and len(short) > 3:
                 return atom(short, r"\mathrm{" + _tex_word(short) + "}")
             return _quoted(short)       # (a one-letter function name reads as a letter: quoted)
         if t is tuple:
@@ -373,7 +449,15 @@ class Reader:
                         "u" if a[1] == 1 else f"u_{{{a[1]}}}")
         if op == "attr":
             obj, name = a[0], a[1]
-            if name in LETTERS and (self._is(obj, "scene") or name in ("Xdot", "Pdot")):
+            if name in ("Xdot", "Pdot"):
+                # the velocity of a flow: its letter (tagged among several flows), the flow's own expression in its
+                # key (two flows' velocities never cancel, and a change of the Hamiltonian is a change of Ẋ)
+                tag = self.flow_tag(obj) or ("", "")
+                return _mk("atom", (LETTERS[name][0] + tag[0], LETTERS[name][1] + tag[1], x(obj).key.hex()))
+            if name in MOVING and self.outer is not None and self._is(obj, "scene") and self.g.args[obj.i][0] == 0:
+                # the claim's own point inside a function's body: a constant there, the point at t = 0
+                return atom(LETTERS[name][0] + "₀", LETTERS[name][1] + "_0")
+            if name in LETTERS and self._is(obj, "scene"):
                 return atom(*LETTERS[name])
             if name == "a" and self._is(obj, "scene"):
                 return atom("a", "a")
@@ -444,7 +528,8 @@ class Reader:
         if op == "dict":
             return _mk("tuple", (), [_mk("named", (k,), (x(v),)) for k, v in zip(a[0], a[1])])
         if op == "fn":
-            return x(a[2])
+            body = a[2]
+            return self.inner().arg(body) if self.outer is None else x(body)
         if op == "kw":
             return _mk("tuple", (), [_mk("named", (k,), (x(v),)) for k, v in a])
         if op == "rank":       # rank(M) = k (generically, or at every point)
@@ -468,18 +553,22 @@ class Reader:
         return out
 
     def _entry(self, m: Expr, i: Any, j: Any) -> Expr:
-        if type(i) is int and type(j) is int:
+        if type(i) is int and type(j) is int and i >= 0 and j >= 0:
             u = f"{i + 1}{j + 1}" if i < 9 and j < 9 else f"{i + 1},{j + 1}"
             return _mk("entry", (u.translate(_SUB_DIGITS), u), (m,))
 
         def part(p: Any) -> str:
-            if type(p) is int:
-                return str(p + 1)
+            if type(p) is int:     # (a negative index counts from the end: X[-1, 0] is X_{end,1})
+                return str(p + 1) if p >= 0 else f"end{p + 1:+d}".replace("+0", "")
             start, stop, step = p[1:]
             if start is None and stop is None and step is None:
                 return ":"
-            lo = 1 if start is None else start + 1 if start >= 0 else f"end{start + 1:+d}".replace("+0", "")
-            hi = "end" if stop is None else stop if stop >= 0 else f"end{stop:+d}"
+            back = step is not None and step < 0        # (a negative step runs from the end down to the first)
+            lo = ("end" if back else 1) if start is None else start + 1 if start >= 0 else \
+                f"end{start + 1:+d}".replace("+0", "")
+            # the last index reached: stop - 1 going up, stop + 1 going down (1-based: stop, stop + 2)
+            hi = ((1 if back else "end") if stop is None else (stop + 2 if back else stop) if stop >= 0 else
+                  f"end{stop + 2 if back else stop:+d}".replace("+0", ""))
             return f"{lo}..{hi}" + ("" if step in (None, 1) else f" step {step}")
         text = f"{part(i)}, {part(j)}"
         return _mk("slice", (text,), (m,))
@@ -493,15 +582,18 @@ class Reader:
             f = g.args[v.i][2][0]
             if type(f) is Ref and g.ops[f.i] == "fn":
                 body = g.args[f.i][2]
-                flow = self.arg(g.args[v.i][2][1])
+                data, kids = self.flow_tag(g.args[v.i][2][1]) or (), (self.arg(g.args[v.i][2][1]),)
+                inner = self.inner()
                 if type(body) is Ref and g.ops[body.i] in ("list", "tuple") and type(key) is int:
-                    return _mk("deriv", (), (self.arg(g.args[body.i][key]), flow))
+                    return _mk("deriv", data, (inner.arg(g.args[body.i][key]),) + kids)
                 if type(body) is Ref and g.ops[body.i] == "dict" and key in g.args[body.i][0]:
-                    return _mk("deriv", (), (self.arg(g.args[body.i][1][g.args[body.i][0].index(key)]), flow))
+                    return _mk("deriv", data, (inner.arg(g.args[body.i][1][g.args[body.i][0].index(key)]),) + kids)
         if type(key) is str and key in LETTERS and self._is(v, "param"):   # z["X"] of a point z: X
             return atom(*LETTERS[key])
-        if type(key) is str and key in GREEK:      # a multiplier of a flow: Λ, Π
-            return name_atom(key)
+        if type(key) is str and key in GREEK:      # a multiplier of a flow: Λ, Π (tagged among several flows)
+            e = name_atom(key)
+            tag = self.flow_tag(v) or ("", "")
+            return _mk("atom", (e.data[0] + tag[0], e.data[1] + tag[1], self.arg(v).key.hex()))
         if self._is(v, "attr", "a") and type(key) is int:
             return atom("a" + str(key + 1).translate(_SUB_DIGITS), f"a_{{{key + 1}}}")
         return _mk("index", (str(key + 1) if type(key) is int else str(key),), (self.arg(v),))
@@ -519,8 +611,8 @@ class Reader:
             return num(Fraction(args[0], args[1]))
         if name == "const":
             return num(args[0])
-        if name in ("scalar", "generic", "general_params", "sym_operator"):
-            return param_atom(args[0])
+        if name in PARAMETER_STEPS:
+            return param_atom(args[0], args[0] in self.quote)
         if name == "fresh":    # a fresh element, numbered by the engine: w̃ᵢ (no name of a claim's spells it)
             return atom("w\u0303" + str(args[0]).translate(_SUB_DIGITS), r"\tilde w_{" + str(args[0]) + "}")
         if name == "zeros":
@@ -540,7 +632,9 @@ class Reader:
         if name == "conj":
             return post("bar", x(args[0]))
         if name == "d":        # along a flow (written d/dt), or along a tangent vector (written so)
-            return _mk("deriv", (), (x(args[0]), x(args[1])))
+            # along a Hamiltonian's flow: tagged, the flow named in the output's legend (a part of the expression
+            # all the same, which a change of the Hamiltonian changes)
+            return _mk("deriv", self.flow_tag(args[1]) or (), (x(args[0]), x(args[1])))
         if name == "gradient":
             return func("∇", [x(args[0])], r"\nabla")
         if name == "bracket":
@@ -754,12 +848,13 @@ class Printer:
                         + ", ".join(vals) + ")"), SUM
             return f"d/dt{self.paren(text)} along ({', '.join(dots)}) = ({', '.join(vals)})", SUM
         text, p = self.show(body, budget)
+        tag = (e.data[1] if self.tex else e.data[0]) if len(e.data) == 2 else ""
         if body.kind == "atom" and len(text) == 1 and text.isalpha() or (self.tex and body.kind == "atom"
                                                                          and not _scripted(text)):
-            return (r"\dot{" + text + "}") if self.tex else text + "\u0307", ATOM
+            return ((r"\dot{" + text + "}") if self.tex else text + "\u0307") + tag, ATOM
         if body.kind != "block":
             text = self.paren(text)
-        return (r"\frac{d}{dt}" if self.tex else "d/dt") + text, ATOM
+        return (r"\frac{d}{dt}" if self.tex else "d/dt") + tag + text, ATOM
 
     def _partial(self, e: Expr, budget: int) -> tuple[str, int]:
         text, p = self.show(e.kids[0], budget)
@@ -812,10 +907,46 @@ def traced_outputs(g: Graph, cap: int = TRACED_CAP) -> list[tuple[str, str, str]
     for name, ref in outs:
         try:
             e = rd.arg(ref)
-            out.append((str(name), uni(e), tex(e)))
+            legend = _flow_legend(rd, ref, cap)
+            out.append((str(name), uni(e) + legend[0], tex(e) + legend[1]))
         except Exception:  # noqa: BLE001 - a node without notation is named so, never an error of the run
-            out.append((str(name), NO_NOTATION, r"	ext{(no notation)}"))
+            out.append((str(name), NO_NOTATION, r"\text{(no notation)}"))
     return out
+
+
+def _flow_legend(rd: Reader, ref: Any, cap: int) -> tuple[str, str]:
+    """The flows an output differentiates along, named after it (Unicode, LaTeX): " (along the Dirac flow of
+    ½tr(PᵀP))", or with several flows each with its tag; ("", "") for an output that names none.  Without it the
+    dotted letters and d/dt of two different Hamiltonians read the same."""
+    g = rd.g
+    if type(ref) is not Ref or not rd.flows:
+        return "", ""
+    seen, stack, used = set(), [ref.i], set()
+    while stack:
+        j = stack.pop()
+        if j in seen:
+            continue
+        seen.add(j)
+        if j in rd.flows:
+            used.add(j)
+        stack.extend(g.refs(j))
+    if not used:
+        return "", ""
+    uni, tex = Printer(False, max(8, cap // 2)), Printer(True, max(8, cap // 2))
+    parts_u, parts_t = [], []
+    for j in sorted(used):
+        step = _flow_step(g, j)
+        fn = next((v for v in g.args[j][1:] + tuple(g.args[j][2] if g.ops[j] == "call" else ())
+                   if type(v) is Ref and g.ops[v.i] == "fn"), None)
+        h = rd.arg(fn) if fn is not None else None
+        tag = rd.flow_tag(Ref(j)) or ("", "")
+        words = FLOW_STEPS[step]
+        parts_u.append(f"{tag[0] + ': ' if tag[0] else ''}{words} {uni(h) if h is not None else '…'}")
+        parts_t.append((f"{tag[1]}\\text{{: }}" if tag[1] else "") + r"\text{" + words + " }"
+                       + (tex(h) if h is not None else r"\dots"))
+    lead = "along " if len(used) == 1 and not rd.flow_tag(Ref(min(used)))[0] else ""
+    return (f" ({lead}{'; '.join(parts_u)})", r"\quad(" + (r"\text{along }" if lead else "")
+            + r";\ ".join(parts_t) + ")")
 
 
 NO_NOTATION = "(no notation)"

@@ -239,8 +239,9 @@ def telling(changes: list[dict[str, str]]) -> list[dict[str, str]]:
 def traced_intro(where: str, graphs: int, expect: str = "holds") -> str:
     """The words before a claim's outputs as traced (:meth:`ClaimResults.traced`)."""
     at = ("one graph for every size run" if not where else f"at {where}" if graphs == 1 else
-          f"at {where} (the claim has a graph at each size, {graphs} in all; shown: the smallest size with 1 < r < n, "
-          "else the smallest, whose graph was read back)")
+          f"at {where} only: the claim's code reads the sizes, and each of its {graphs} sizes has a graph of its own, "
+          "about which that size's verdict is (results.json and stiefelsym show --size n,r give each); shown: the "
+          "smallest size with 1 < r < n, else the smallest, whose graph was read back")
     stated = "each residual is stated not to vanish identically" if expect == "nonzero" else \
         "each residual is stated to vanish"
     return f"As traced (what every method evaluated, read back from the claim's graph, not its code; {at}; {stated})"

@@ -81,3 +81,40 @@ def test_a_block_over_r_and_n_minus_r_is_never_rn_and_says_why():
                            "--method", "exact").stdout)["results"]
     assert [r["verdict"] for r in recs] == ["error"]
     assert "the sum R^r + R^(n-r) (never R^n" in recs[0]["message"], recs[0]["message"]
+
+
+# h4: the outputs as traced that read as another statement (each verdict was right for its graph; the text was not)
+H4 = S86 / "h4"
+
+
+def _show(path: Path, cid: str) -> str:
+    out = subprocess.run([sys.executable, "-m", "stiefelsym", "show", cid, "--claims", str(path)],
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr[-2000:]
+    return out.stdout.split("traced:", 1)[1]
+
+
+@pytest.mark.parametrize("cid, shown", [
+    # W1: the flow a derivative, a velocity or a multiplier is taken along is named
+    ("t2-kinetic-proved", "d/dt(½tr(PᵀP)) (along the Dirac flow of ½tr(PᵀP))"),
+    ("t3-pdot-zero", "Ṗ⁽¹⁾ − Ṗ⁽²⁾ (⁽¹⁾: the Dirac flow of ½tr(PᵀP); ⁽²⁾: the Dirac flow of ½tr(PᵀP) + ½tr(XᵀAX))"),
+    ("t6b-multiplier-honest", "Λ + Λᵀ (along the flow with multipliers of"),
+    # W2: the claim's own point inside a function's body is a constant there, X₀
+    ("t10-closure-constant", "d/dt(½tr(X₀ᵀAX₀)) (along the Dirac flow of"),
+    ("t10b-closure-honest", "d/dt(½tr(XᵀAX)) (along the Dirac flow of"),
+    # W4, W5: a parameter named like an entry, an identity, a multiplier, a function, a product, or like another
+    ("t4-entry-param", "‘P21’"), ("t5-identity-param", "XᵀX − ‘I2’"), ("t6-multiplier-param", "‘Lambda’ + ‘Lambda’ᵀ"),
+    ("t7-tr-param", "‘tr’(XᵀP − PᵀX)"), ("t8-product-name", "Xᵀ‘AX’"), ("t9-twin-names", "‘G1’ − ‘G_1’"),
+])
+def test_the_text_as_traced_reads_as_its_graph(cid, shown):
+    assert shown in _show(H4 / "traced_confusables.py", cid)
+
+
+def test_invisible_characters_in_a_check_name_are_refused():
+    """h4 W7: a check name ending with U+202E displayed the rest of its line reversed; such names are refused."""
+    assert "does not trace here" in _show(H4 / "traced_confusables.py", "t11-bidi-name")
+
+
+def test_negative_indices_and_size_dependent_graphs_are_said():
+    assert "X[end, 1] − X₃₁" in _show(H4 / "traced_indices.py", "p-neg")                          # h4 M2
+    assert "at (3,2) only (the claim's code reads the sizes" in _show(H4 / "traced_size_choice.py", "s9-so3-cubic")
