@@ -121,8 +121,6 @@ class PolyRing:
         self._factor_memo: dict[str, tuple] = {}
         self.memo: dict = {}               # symengine expression -> (numerator, denominator)
         self.version = 0                   # bumped when the context grows
-        #: the number of parameters the ring's field has made (None: unknown), read when the context grows
-        self.expected: Any = None
         self.ctx = None
         cap = _INITIAL_VARS
         while cap < min(width, MAX_VARS):
@@ -169,12 +167,7 @@ class PolyRing:
             if i >= MAX_VARS:
                 raise NotRational(f"more than {MAX_VARS} parameters (flint's exponent vectors are dense)")
             if i >= self.cap:
-                # as wide as the parameters the field has made so far (they usually all become variables):
-                # one step where doubling would take several, each carrying every stored polynomial
-                cap, want = 2 * self.cap, min(self.expected(), MAX_VARS) if self.expected is not None else 0
-                while cap < want:
-                    cap *= 2
-                self._set_ctx(cap)
+                self._set_ctx(2 * self.cap)
             self.syms.append(sym)
             self.index[sym] = i
         return self.gens[i]
@@ -1857,8 +1850,6 @@ class SymbolicField(Field):
                 # set once: assigning a class attribute invalidates the interpreter's attribute caches
                 SymbolicField._encoded_type = _BigPoly
             self._poly_ring = PolyRing(self._width)
-            symbols = self.symbols
-            self._poly_ring.expected = lambda: len(symbols)
         return self._poly_ring
 
     def ring_width(self) -> int:
