@@ -660,7 +660,32 @@ def reader(g: Graph) -> Reader:
 # printing
 
 
+#: a rational with more digits than this (numerator and denominator together) is written by its magnitude
+BIG_DIGITS = 30
+
+
+def _big(q: Fraction, tex: bool) -> str:
+    """A positive rational of many digits: 2ᵏ exactly where it is a power of 2 (2⁻¹⁵⁰⁰⁰), else its magnitude and
+    digit count, "(≈3.5487·10⁻⁴⁵¹⁶, 1/4516 digits)" (its exact value is in the expression's key: two such
+    constants never cancel, and results.json's digest names the graph)."""
+    for a, b, sign in ((q.numerator, q.denominator, -1), (q.denominator, q.numerator, 1)):
+        if a == 1 and b & (b - 1) == 0:
+            k = sign * (b.bit_length() - 1)
+            return f"2^{{{k}}}" if tex else "2" + str(k).translate(_SUP_DIGITS)
+    dn, dd = len(str(q.numerator)), len(str(q.denominator))
+    e = dn - dd
+    m = q / Fraction(10) ** e
+    if m < 1:
+        e, m = e - 1, m * 10
+    mant = f"{float(m):.4f}"
+    if tex:
+        return rf"(\approx {mant}\cdot 10^{{{e}}},\ \text{{{dn}/{dd} digits}})"
+    return f"(≈{mant}·10{str(e).translate(_SUP_DIGITS)}, {dn}/{dd} digits)"
+
+
 def _frac(q: Fraction, tex: bool) -> str:
+    if len(str(q.numerator)) + len(str(q.denominator)) > BIG_DIGITS:
+        return _big(q, tex)
     if q.denominator == 1:
         return str(q.numerator)
     if tex:
