@@ -350,13 +350,16 @@ PARAMETER_STEPS = ("scalar", "generic", "general_params", "sym_operator")
 class Reader:
     """The expressions of one graph's nodes (each node read once)."""
 
-    def __init__(self, g: Graph, twin: "Reader | None" = None, outer: "Reader | None" = None) -> None:
+    def __init__(self, g: Graph, twin: "Reader | None" = None, outer: "Reader | None" = None,
+                 own: int | None = None) -> None:
         self.g = g
         self.memo: dict[int, Expr] = {}
-        #: the reader of the bodies of the graph's functions (made when one is read): there the point of the claim's
-        #: own scene is a constant, X₀ (a function differentiated along a flow moves its own scene's point only)
+        #: the readers of the bodies of the graph's functions, one per function's own scene (made when one is read):
+        #: there the point of every other scene (the claim's, or an enclosing function's) is a constant, X₀ (a
+        #: function differentiated along a flow moves its own scene's point only)
         self.outer = outer
-        self._inner: "Reader | None" = None
+        self.own = own
+        self._inner: dict[int, "Reader"] = {}
         # the flows the graph differentiates along (a Hamiltonian's flow, not a tangent given outright): with more
         # than one, each is tagged ⁽ᵏ⁾ on its derivatives, dotted letters and multipliers
         self.flows = outer.flows if outer is not None else flow_nodes(g)
@@ -385,12 +388,12 @@ class Reader:
         k = self.flows.index(ref.i) + 1
         return f"⁽{str(k).translate(_SUP_DIGITS)}⁾", f"^{{({k})}}"
 
-    def inner(self) -> "Reader":
-        if self.outer is not None:
-            return self
-        if self._inner is None:
-            self._inner = Reader(self.g, outer=self)
-        return self._inner
+    def inner(self, own: int) -> "Reader":
+        """The reader of a function's body whose own scene is number ``own``."""
+        top = self.outer or self
+        if own not in top._inner:
+            top._inner[own] = Reader(self.g, outer=top, own=own)
+        return top._inner[own]
 
     def node(self, i: int) -> Expr:
         if i not in self.memo:
@@ -454,8 +457,9 @@ class Reader:
                 # key (two flows' velocities never cancel, and a change of the Hamiltonian is a change of Ẋ)
                 tag = self.flow_tag(obj) or ("", "")
                 return _mk("atom", (LETTERS[name][0] + tag[0], LETTERS[name][1] + tag[1], x(obj).key.hex()))
-            if name in MOVING and self.outer is not None and self._is(obj, "scene") and self.g.args[obj.i][0] == 0:
-                # the claim's own point inside a function's body: a constant there, the point at t = 0
+            if name in MOVING and self.own is not None and self._is(obj, "scene") and self.g.args[obj.i][0] != self.own:
+                # another scene's point inside a function's body (the claim's, an enclosing function's): a constant
+                # there, the point at t = 0
                 return atom(LETTERS[name][0] + "₀", LETTERS[name][1] + "_0")
             if name in LETTERS and self._is(obj, "scene"):
                 return atom(*LETTERS[name])
@@ -528,8 +532,7 @@ class Reader:
         if op == "dict":
             return _mk("tuple", (), [_mk("named", (k,), (x(v),)) for k, v in zip(a[0], a[1])])
         if op == "fn":
-            body = a[2]
-            return self.inner().arg(body) if self.outer is None else x(body)
+            return self.inner(a[0]).arg(a[2])
         if op == "kw":
             return _mk("tuple", (), [_mk("named", (k,), (x(v),)) for k, v in a])
         if op == "rank":       # rank(M) = k (generically, or at every point)
@@ -583,7 +586,7 @@ class Reader:
             if type(f) is Ref and g.ops[f.i] == "fn":
                 body = g.args[f.i][2]
                 data, kids = self.flow_tag(g.args[v.i][2][1]) or (), (self.arg(g.args[v.i][2][1]),)
-                inner = self.inner()
+                inner = self.inner(g.args[f.i][0])
                 if type(body) is Ref and g.ops[body.i] in ("list", "tuple") and type(key) is int:
                     return _mk("deriv", data, (inner.arg(g.args[body.i][key]),) + kids)
                 if type(body) is Ref and g.ops[body.i] == "dict" and key in g.args[body.i][0]:

@@ -118,3 +118,10 @@ def test_invisible_characters_in_a_check_name_are_refused():
 def test_negative_indices_and_size_dependent_graphs_are_said():
     assert "X[end, 1] − X₃₁" in _show(H4 / "traced_indices.py", "p-neg")                          # h4 M2
     assert "at (3,2) only (the claim's code reads the sizes" in _show(H4 / "traced_size_choice.py", "s9-so3-cubic")
+
+
+def test_an_enclosing_functions_point_is_a_constant_in_an_inner_body():
+    """own (after h4): an inner function closing over the outer function's t.X (a constant for the inner derivative,
+    so the graph is 0 and proved) printed as d/dt(d/dt(½tr(XᵀAX))) = 0, which reads as false; every scene's point
+    but the function's own is X₀ in its body."""
+    assert "d/dt⁽¹⁾(d/dt⁽²⁾(½tr(X₀ᵀAX₀)))" in _show(S86 / "own" / "nested_closure.py", "nested-closure")
