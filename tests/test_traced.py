@@ -226,3 +226,36 @@ def test_show_at_a_large_size_ends_within_its_budget(tmp_path, monkeypatch):
     monkeypatch.setattr(cli, "SHOW_SECONDS", 1.0)
     out = _invoke(tmp_path, "show", "dual-lax-determines-the-point", "--size", "60,60")
     assert out.exit_code == 0 and "the trace did not end within 1 s at this size" in out.output, out.output
+
+
+NESTED = '''
+from stiefelsym import admissible, claim
+
+
+@claim("doubling", kind="id", sizes=admissible(n_max=3))
+def doubling(s):
+    """Forty products, each reading the one before twice: a text of exponential length written whole."""
+    M = s.X.T @ s.X
+    for _ in range(40):
+        M = M @ M - M
+    return {"M": M - M}
+'''
+
+
+def test_show_full_prints_what_the_records_cut(tmp_path, monkeypatch):
+    """h4's W8 (stop 86): a record's text is cut to a reader's length (a long sum ends in …, a matrix of many blocks
+    is named by its shape); `show --full` prints every term and block, and a text too long to write whole ends within
+    the show's budget with a message that says why."""
+    from stiefelsym import cli
+    (tmp_path / "nested.py").write_text(NESTED, encoding="utf-8")
+    cut = _invoke(tmp_path, "show", "gen-chasles")
+    whole = _invoke(tmp_path, "show", "gen-chasles", "--full")
+    assert cut.exit_code == 0 and whole.exit_code == 0, (cut.output, whole.output)
+    assert "(2×2 matrix)" in cut.output and "(2×2 matrix)" not in whole.output
+    assert "read back from the claim's graph, whole:" in whole.output
+    assert "−Xᵀ(λIₙ − A)⁻¹P, −Xᵀ(λIₙ − A)⁻¹X; Iᵣ + Pᵀ(λIₙ − A)⁻¹P, Pᵀ(λIₙ − A)⁻¹X" in whole.output
+    monkeypatch.setattr(cli, "SHOW_SECONDS", 2.0)
+    out = _invoke(tmp_path, "show", "doubling", "--claims", "nested.py", "--full")
+    assert out.exit_code == 0 and "did not end within 2 s: written whole" in out.output, out.output
+    out = _invoke(tmp_path, "show", "doubling", "--claims", "nested.py")
+    assert out.exit_code == 0 and "M: (" in out.output and "…" in out.output, out.output

@@ -1084,7 +1084,10 @@ def list_claims(claims_files: tuple[str, ...]) -> None:
 @click.option("--size", "size", type=SizeType(), default=None, metavar="n,r",
               help="Show the outputs as traced at this size (default: with symbolic sizes where the claim "
                    "traces so, else at its smallest size).")
-def show(claim_id: str, claims_files: tuple[str, ...], size: Any = None) -> None:
+@click.option("--full", is_flag=True,
+              help="Print the outputs as traced whole: every term of a sum and every block of a matrix, however "
+                   "long (the reports cut them to a reader's length).")
+def show(claim_id: str, claims_files: tuple[str, ...], size: Any = None, full: bool = False) -> None:
     """Show one claim: statement, docstring, sizes, source, and its outputs as traced (what every method
     evaluates, read back from the claim's graph)."""
     registry, _ = _registry(claims_files, (claim_id,))
@@ -1125,34 +1128,38 @@ def show(claim_id: str, claims_files: tuple[str, ...], size: Any = None) -> None
                                  + [f" at {'r = n' if k == 0 else f'n - r <= {k}'} at n = {n}"
                                     for n, k in corr.exact_corank])))
     click.echo(f"source:      {_source(c)}")
-    _show_traced(c, size)
+    _show_traced(c, size, full)
 
 
 #: the budget of `show`'s trace (seconds, and GiB of memory): a claim traced at a large size by its own loops
 SHOW_SECONDS, SHOW_GIB = 20.0, 4.0
 
 
-def _show_traced(c: Any, size: Any) -> None:
+def _show_traced(c: Any, size: Any, full: bool = False) -> None:
     """The claim's outputs as traced (:func:`stiefelsym.run.runner.traced_text`): at ``size``, else with
-    symbolic sizes, else at its smallest size; a claim that does not trace says so.  The trace runs in a child with
-    a budget of time and memory (a claim that needs fixed sizes runs its own loops at the size asked)."""
+    symbolic sizes, else at its smallest size; a claim that does not trace says so; ``full``: nothing cut.  The
+    trace runs in a child with a budget of time and memory (a claim that needs fixed sizes runs its own loops at
+    the size asked)."""
     from stiefelsym.run.isolate import ChildDied, ChildError, HardTimeout, run_isolated
     from stiefelsym.run.runner import traced_text
 
     def trace() -> tuple[str, list]:
         _memory_limit(SHOW_GIB)
         if size is not None:
-            return f"({size.n},{size.r})", traced_text(c, size)
-        found = traced_text(c, None)
+            return f"({size.n},{size.r})", traced_text(c, size, full=full)
+        found = traced_text(c, None, full=full)
         if found or not len(c.sizes):
             return "every size", found
         low = min(c.sizes, key=lambda z: (z.n, z.r))
-        return f"({low.n},{low.r})", traced_text(c, low)
+        return f"({low.n},{low.r})", traced_text(c, low, full=full)
 
     try:
         where, traced = run_isolated(trace, SHOW_SECONDS, lambda exc: f"{type(exc).__name__}: {exc}")
     except HardTimeout:
-        click.echo(f"traced:      (the trace did not end within {SHOW_SECONDS:.0f} s at this size)")
+        click.echo(f"traced:      (the trace did not end within {SHOW_SECONDS:.0f} s at this size)" if not full else
+                   f"traced:      (the trace and its text did not end within {SHOW_SECONDS:.0f} s: written whole, a "
+                   "graph that reads its nodes many times has a text of exponential length; without --full it is cut "
+                   "to a reader's length)")
         return
     except (ChildDied, ChildError) as exc:
         click.echo(f"traced:      (the trace ended without a graph: {_one_line(str(exc))})")
@@ -1160,10 +1167,11 @@ def _show_traced(c: Any, size: Any) -> None:
     if not traced:
         click.echo("traced:      (the claim does not trace here: `stiefelsym verify` says why)")
         return
-    click.echo(f"traced:      at {where}, read back from the claim's graph:"
+    whole = ", whole" if full else ""
+    click.echo(f"traced:      at {where}, read back from the claim's graph{whole}:"
                if where == "every size" or size is not None else
                f"traced:      at {where} only (the claim's code reads the sizes: each size has a graph of its own, "
-               "--size n,r shows another), read back from the claim's graph:")
+               f"--size n,r shows another), read back from the claim's graph{whole}:")
     for name, text, _tex in traced:
         click.echo(f"  {name + ': ' if name else ''}{text}")
 

@@ -917,6 +917,11 @@ def outputs(g: Graph) -> list[tuple[str, Any]]:
 
 #: at most this many letters and numbers of each output are printed where a graph is shown as traced
 TRACED_CAP = 60
+#: a graph of more nodes than this is not read back where a record is made (about 70 µs a node): its text is
+#: its size (:data:`NOT_READ_BACK`, :func:`stiefelsym.run.runner.traced_text`)
+TRACED_NODES = 1500
+#: the reader's length of a text printed whole (`stiefelsym show --full`): no sum, matrix or name is cut
+FULL_CAP = 1 << 60
 
 
 def traced_outputs(g: Graph, cap: int = TRACED_CAP) -> list[tuple[str, str, str]]:

@@ -142,7 +142,11 @@ GRAPH_EXPLANATION = (
     "digest are about the same computation, and the command stiefelsym check compares it when it "
     "traces every record again.  The verdicts shown are those results.json records; stiefelsym check (and "
     "stiefelsym report with its check option) also runs every record again and refuses a file whose verdicts "
-    "the runs do not give again.")
+    "the runs do not give again.  Each record also carries its graph's outputs as traced, read back in the "
+    "paper's notation from the graph (never from the claim's code); the Markdown report prints them under each "
+    "claim, the LaTeX report under each claim of a claims file.  They are cut to a reader's length: a long sum "
+    "ends in …, a matrix of many blocks is named by its shape, and a graph of more than "
+    f"{notation.TRACED_NODES:,} nodes by its size; `stiefelsym show CLAIM --full` prints them whole.")
 
 REFERENCES_EXPLANATION = (
     "A reference such as (9) §4 is equation (9) of Section 4: the paper numbers its equations afresh in each "

@@ -24,6 +24,7 @@ from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, MOST_G
 from stiefelsym.results import PASSING, VERDICTS, Result
 from stiefelsym.scene import SizeError
 from stiefelsym.ir import numbers_only
+from stiefelsym.ir import notation
 
 METHODS = ("auto", "exact", "rational", "modular", "float", "ball", "free")
 #: the verdicts that are never expected: the method could not decide, or the check broke
@@ -318,11 +319,16 @@ def graph_digest(claim: Claim, size: Size | None, func: Callable | None = None) 
     return hashlib.sha256("\n".join(f"{f}: {d}" for f, d in graphs).encode()).hexdigest()
 
 
-def traced_text(claim: Claim, size: Size | None, func: Callable | None = None) -> list[list[str]]:
+def traced_text(claim: Claim, size: Size | None, func: Callable | None = None,
+                full: bool = False) -> list[list[str]]:
     """The claim's outputs as traced at ``size`` (None: symbolic sizes), in the paper's notation: one
     [name, Unicode, LaTeX] per output (:func:`stiefelsym.ir.notation.traced_outputs`), read from the graph
     the record's digest names; [] when the claim does not trace there.  A claim the dimension-free method
-    takes on families of sizes has each family's outputs, named with the family."""
+    takes on families of sizes has each family's outputs, named with the family.
+
+    A record's text is cut to a reader's length: a long sum ends in "…", a matrix of many blocks is named
+    by its shape, a graph of more than :data:`TRACED_NODES` nodes by its size.  ``full``: nothing is cut
+    (every term, block and node read back; ``stiefelsym show --full``), never cached, never a record's."""
     from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.ir.notation import NOT_READ_BACK, traced_outputs
     from stiefelsym.methods.families import size_families, stated_on
@@ -347,6 +353,11 @@ def traced_text(claim: Claim, size: Size | None, func: Callable | None = None) -
     except BaseException:   # noqa: BLE001 - the run's verdict says why the claim does not trace
         return []
     out: list[list[str]] = []
+    if full:
+        from stiefelsym.ir.notation import FULL_CAP
+        for fam, g in graphs:
+            out += [[f"{name} ({fam})" if fam else name, uni, tex] for name, uni, tex in traced_outputs(g, FULL_CAP)]
+        return out
     for fam, g in graphs:
         key = g.digest()
         text = _TRACED.get(key)
@@ -367,7 +378,7 @@ def traced_text(claim: Claim, size: Size | None, func: Callable | None = None) -
 _TRACED: dict[str, list[list[str]]] = {}
 #: a graph of more nodes than this is not read back (:func:`traced_text`); its text begins with
 #: :data:`stiefelsym.ir.notation.NOT_READ_BACK`
-TRACED_NODES = 1500
+TRACED_NODES = notation.TRACED_NODES
 
 
 def graph_change(claim: Claim, func: Callable, size: Size | None) -> list[dict[str, str]]:
