@@ -629,8 +629,9 @@ def _m_tr(s, M):
     if not isinstance(M, Tracer) or M._kind == SCALAR:
         return t.refuse("tr takes a matrix of the scene")
     if M._kind == MAT and _same_size(*M._shape, s._t) is False:
-        return t.refuse(f"the trace of a matrix whose row and column spaces do not match ({M!r}): tr, det and "
-                        "powers take a map of one space to itself, and a matrix from R^r to R^n (X, P) is not one, "
+        return t.refuse(f"the trace (of the matrix itself, or of a power of it for det and elementary) of a matrix "
+                        f"whose row and column spaces do not match ({M!r}): tr, det and powers take a map of one "
+                        "space to itself, and a matrix from R^r to R^n (X, P) is not one, "
                         "even at r = n; the square matrix of its entries, s.mat([[M[i, j] for j in range(s.r)] for i "
                         "in range(s.n)], ('n', 'n')), is")
     return _call(s, "tr", (M._r,), SCALAR)

@@ -81,7 +81,7 @@ KIND_MEANING = {
     "lax": "a Lax equation implied by a flow",
     "pb": "a Poisson-bracket statement",
     "dim": "a dimension, rank or count",
-    "not": "the statement says this does NOT hold (needs a certified witness)",
+    "not": "the statement says this does NOT hold (needs a certified witness: one residual shown nonzero)",
     "geo": "a geometric statement, checked through its algebraic form",
 }
 
@@ -90,7 +90,8 @@ def kind_words(c: "ClaimResults") -> str:
     that too: the kind alone would say they must vanish.  The realization of T*V when it is not the standard one."""
     words = KIND_MEANING.get(c.kind, "")
     if c.expect == "nonzero" and c.kind != "not":
-        words += "; its residuals are stated NOT to vanish identically (needs a certified witness)"
+        words += ("; its residuals are stated NOT to vanish identically all at once (needs a certified witness: one "
+                  "residual shown nonzero)")
     if c.realization != "standard":
         words += f"; in the {c.realization} realization of T*V"
     return words
@@ -246,7 +247,8 @@ def traced_intro(where: str, graphs: int, expect: str = "holds") -> str:
           f"at {where} only: the claim's code reads the sizes, and each of its {graphs} sizes has a graph of its own, "
           "about which that size's verdict is (results.json and stiefelsym show --size n,r give each); shown: the "
           "smallest size with 1 < r < n, else the smallest, whose graph was read back")
-    stated = "each residual is stated not to vanish identically" if expect == "nonzero" else \
+    stated = ("the residuals are stated not to vanish identically all at once: one shown nonzero proves the claim, "
+              "and a residual that vanishes beside it is not reported") if expect == "nonzero" else \
         "each residual is stated to vanish"
     return f"As traced (what every method evaluated, read back from the claim's graph, not its code; {at}; {stated})"
 
