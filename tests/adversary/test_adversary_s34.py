@@ -9,6 +9,7 @@ import re
 import pytest
 
 from adversary_cli import HERE, PASSING, ROOT, cli
+from adversary_replay import namespaces
 
 #: a verdict line with its method: "<claim> (n,r) <method>: <verdict>" or "<claim> all n, r free: <verdict>"
 METHOD_LINE = re.compile(r"^(\S+) (?:\(\d+,\d+\)|all n, r) (\w+): (\w+)")
@@ -305,16 +306,11 @@ def _verify_in(cwd, tmp_path, *methods, confine="spawn"):
     return subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True, timeout=300)
 
 
-def _namespaces() -> bool:
-    from stiefelsym.run.sandbox import namespaces_available
-    return namespaces_available()
-
-
 @pytest.mark.parametrize("method", ["exact", "free", "auto"])
 def test_in_namespaces_the_file_puts_no_module_on_the_import_path(tmp_path, method):
     """In namespaces the same file writes nothing the verifying process can see (its /tmp is private, every
     other mount read-only): no module appears in the working directory, and its false claim is not passed."""
-    if not _namespaces():
+    if not namespaces():
         pytest.skip("no user + pid + mount namespaces here (unshare)")
     cwd = _scratch_cwd(tmp_path)
     out = _verify_in(cwd, tmp_path, method, confine="namespaces")

@@ -3,22 +3,15 @@ constant coefficients (s78/review/el_*.py), and the stop's own files (s78/own/):
 mix derivative levels, and kinetic energies whose coefficients move with the position."""
 from __future__ import annotations
 
-import json
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from adversary_replay import records
+
 HERE = Path(__file__).parent / "s78"
-
-
-def _records(path: Path, *args: str) -> dict:
-    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                          "--format", "json", *args], capture_output=True, text=True, timeout=600)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
-
 
 NOT_QUADRATIC = "not a quadratic form in the velocities"
 POSITION = "may depend on the point other than through its variable"
@@ -33,13 +26,13 @@ def test_euler_lagrange_of_a_linear_term_and_of_a_cubic_one(method):
     gradients at basis vectors, dropped the cubic term); a kinetic energy of degree above 2 in the velocities
     is now refused by every method, a cubic trace form by the dimension-free one too."""
     for name in ("el_linear_kinetic.py", "el_linear_complex.py"):
-        for (cid, n, r), rec in _records(HERE / "review" / name, "--method", method).items():
+        for (cid, n, r), rec in records(HERE / "review" / name, "--method", method).items():
             if cid.endswith("-true"):
                 assert rec["verdict"] in ("proved", "checked", "numeric"), (name, cid, n, r, rec["verdict"])
             else:
                 assert rec["verdict"] in ("fails", "undecided"), (name, cid, n, r, rec["verdict"])
-    cubic = list(_records(HERE / "review" / "el_cubic_kinetic.py", "--method", method).values())
-    cubic += list(_records(HERE / "own" / "kinetic_position.py", "o78-el-cubic-trace", "--method", method).values())
+    cubic = list(records(HERE / "review" / "el_cubic_kinetic.py", "--method", method).values())
+    cubic += list(records(HERE / "own" / "kinetic_position.py", "o78-el-cubic-trace", "--method", method).values())
     for rec in cubic:
         assert rec["verdict"] in ("error", "undecided"), (rec["claim"], rec["verdict"])
         if method != "free" or rec["claim"] == "o78-el-cubic-trace":
@@ -51,7 +44,7 @@ def test_a_kinetic_energy_that_moves_with_the_position_is_refused(method):
     """The stop's own attempt: T reading the position (closed over, or through its own scene's double point) had
     its coefficients read at the point and the equations solved as if constant; refused when traced, for every
     method.  A constant coefficient (tr A) is accepted."""
-    recs = _records(HERE / "own" / "kinetic_position.py", "--method", method)
+    recs = records(HERE / "own" / "kinetic_position.py", "--method", method)
     for (cid, n, r), rec in recs.items():
         if cid == "o78-el-cubic-trace":
             continue
@@ -66,7 +59,7 @@ def test_points_and_scalars_of_other_levels(method):
     """twisted.at_point(t, Xₜ, Pₜ) and at_point(t, X_s, P_s) (a value of the enclosing scene: a constant), and
     t's matrices times a number of w's level (lifted by the evaluator): true claims pass, false twins fail."""
     for name in ("at_point_levels.py", "scalar_of_inner_level.py"):
-        for (cid, n, r), rec in _records(HERE / "own" / name, "--method", method).items():
+        for (cid, n, r), rec in records(HERE / "own" / name, "--method", method).items():
             want = ("fails",) if cid.endswith("-false") else ("proved", "checked", "numeric")
             assert rec["verdict"] in want, (name, cid, n, r, rec["verdict"])
 
@@ -80,7 +73,7 @@ def test_phi_at_a_point_taken_on_a_derivatives_scene(method):
     copy of a tangent scene kept its closed form of Φ in its base's point and flow): exact proved and modular
     checked the false value, every method refuted the true one.  The problem at a point given on a derivative's
     scene is now a scene of its own (ConstantScene).  The false twins hold at (1,1) only (so(1) = 0)."""
-    for (cid, n, r), rec in _records(REVIEW2 / "atpoint_phi.py", "--method", method).items():
+    for (cid, n, r), rec in records(REVIEW2 / "atpoint_phi.py", "--method", method).items():
         if cid.endswith("-true"):
             assert rec["verdict"] in ("proved", "checked", "numeric"), (cid, n, r, rec["verdict"])
         elif (n, r) != (1, 1):
@@ -94,7 +87,7 @@ def test_a_potential_or_a_kinetic_energy_reaching_the_point_by_another_road_is_r
     taken as constants, they gave the equations of another Lagrangian (free proved the false twins of W4 for
     all n, r).  The potential and the constraints, like T, may read their own variable and constants only."""
     for name in ("el_kinetic_via_point.py", "el_potential_velocity.py", "el_complex_potential_velocity.py"):
-        for key, rec in _records(REVIEW2 / name, "--method", method).items():
+        for key, rec in records(REVIEW2 / name, "--method", method).items():
             assert rec["verdict"] == "error" and POSITION in rec["message"], (name, key, rec["verdict"])
 
 
@@ -104,7 +97,7 @@ def test_the_engines_generic_velocity_is_not_the_claims_next_draw(method):
     the generator's state restored, so the claim's next draw repeated it, and a cubic term built to vanish there
     passed under modular and float.  The engine's own parameters now come from a generator of their own
     (Scene._engine_params), a digest of the scene's state, which they do not advance."""
-    recs = _records(REVIEW2 / "el_predicted_velocity.py", "--method", method)
+    recs = records(REVIEW2 / "el_predicted_velocity.py", "--method", method)
     for (cid, n, r), rec in recs.items():
         if cid.endswith("-true"):
             assert rec["verdict"] in ("checked", "numeric"), (cid, n, r, rec["verdict"])
@@ -135,7 +128,7 @@ def test_the_second_reviews_mixed_levels_and_two_calls(method):
     canonical and Dirac flows there, and two Euler-Lagrange calls in one claim: true pass, false fail (a cubic
     kinetic energy is refused)."""
     for name in ("levels_mixed.py", "el_two_calls.py", "el_cubic_variants.py"):
-        for (cid, n, r), rec in _records(REVIEW2 / name, "--method", method).items():
+        for (cid, n, r), rec in records(REVIEW2 / name, "--method", method).items():
             if "cubic" in cid:
                 assert rec["verdict"] == "error" and NOT_QUADRATIC in rec["message"], (name, cid, rec["verdict"])
             elif cid.endswith("-true"):
@@ -168,7 +161,7 @@ def test_a_hamiltonian_reaching_the_point_by_another_road_is_refused(method):
     """The stop's own extension of the second review's W4 to the flows: a Hamiltonian of
     systems.stiefel_pairs_flow (and hamiltonian_flow) that reads the point other than through its variable
     (the second point closed over, its scene's Y) is refused when traced; through z it is accepted."""
-    for (cid, n, r), rec in _records(HERE / "own" / "flow_closure.py", "--method", method).items():
+    for (cid, n, r), rec in records(HERE / "own" / "flow_closure.py", "--method", method).items():
         if cid.endswith("-true"):
             assert rec["verdict"] in ("proved", "checked", "numeric"), (cid, n, r, rec["verdict"])
         elif cid.endswith("-false"):
@@ -187,7 +180,7 @@ def test_a_variable_of_the_point_no_coordinate_moves_is_refused(method):
     argument as constants (the steps differentiate along the coordinates only): the false twins were proved.
     Every variable of the point must now be a coordinate's (a pair's)."""
     for name, words in (("el_extra_key.py", "no coordinate moves"), ("flow_extra_key.py", "in no (position, momentum) pair")):
-        for (cid, n, r), rec in _records(REVIEW3 / name, "--method", method).items():
+        for (cid, n, r), rec in records(REVIEW3 / name, "--method", method).items():
             assert rec["verdict"] == "error", (name, cid, n, r, rec["verdict"])
             assert words in rec["message"] or POSITION in rec["message"], (name, cid, rec["message"])
 
@@ -200,7 +193,7 @@ def test_a_generic_constant_of_the_kinetic_energy_is_a_constant(method):
     method where it decides) and not those of c(X)tr(ẊᵀẎ), a Lagrangian the claim does not write (its `-true`,
     failed).  A function's closed-over values and parameters are constants of it; the engine refuses those it
     sees move with the scene's point (guide: Euler-Lagrange)."""
-    for (cid, n, r), rec in _records(REVIEW3 / "el_generic_position.py", "--method", method).items():
+    for (cid, n, r), rec in records(REVIEW3 / "el_generic_position.py", "--method", method).items():
         if cid == "r3-el-generic-true":
             assert rec["verdict"] in ("fails", "inconclusive"), (cid, n, r, rec["verdict"])
         else:
@@ -212,12 +205,12 @@ def test_the_third_reviews_points_of_lifted_scenes_and_whitelist_controls(method
     """Third review, no hole: at_point on lifted scenes (gradients, Dirac flows, constants; the false twins hold
     at r = 1 or r = n, where Ψ or the flow's part vanishes), whitelisted calls fed a point value (refused), and a
     cubic part of coefficient 10⁻⁶⁰ (refused by float too)."""
-    for (cid, n, r), rec in _records(REVIEW3 / "atpoint_lifted.py", "--method", method).items():
+    for (cid, n, r), rec in records(REVIEW3 / "atpoint_lifted.py", "--method", method).items():
         if cid.endswith("-true"):
             assert rec["verdict"] in ("proved", "checked", "numeric"), (cid, n, r, rec["verdict"])
         elif r not in (1, n):
             assert rec["verdict"] == "fails", (cid, n, r, rec["verdict"])
-    for (cid, n, r), rec in _records(REVIEW3 / "el_whitelist_controls.py", "--method", method).items():
+    for (cid, n, r), rec in records(REVIEW3 / "el_whitelist_controls.py", "--method", method).items():
         assert rec["verdict"] == "error", (cid, n, r, rec["verdict"])
 
 
@@ -230,7 +223,7 @@ def test_a_quadratic_function_of_an_operator_that_is_not_symmetric_is_refused(me
     op = ad_K (skew, so h = 0) and op(x) = Bx on gl(n), exact proved, modular checked, float passed and free
     proved for all n, r the false Casimir residual and bracket.  The gradient is now one constant step of the
     graph that checks op linear and symmetric at two generic elements of the engine's own, under every method."""
-    for (cid, n, r), rec in _records(REVIEW4 / "quadratic_nonsymmetric.py", "--method", method).items():
+    for (cid, n, r), rec in records(REVIEW4 / "quadratic_nonsymmetric.py", "--method", method).items():
         if cid == "r4-quad-adk-value-zero":         # the value ½<x, [K, x]> = 0 itself is right
             assert rec["verdict"] in ("proved", "checked", "numeric"), (cid, rec["verdict"])
         else:
@@ -243,7 +236,7 @@ def test_coordinates_of_the_claims_own_are_refused(method):
     """Fourth review W2 and W3: euler_lagrange and hamiltonian_flow took a claim's own list of coordinates for a
     basis that spans and is orthonormal: one left out made Ẍ₁₁ = 0, 2E_ij made the flow 4 times too fast, and
     the false twins were proved.  Only the engine's coordinates, as made, are taken."""
-    for (cid, n, r), rec in _records(REVIEW4 / "el_coords_subset.py", "--method", method).items():
+    for (cid, n, r), rec in records(REVIEW4 / "el_coords_subset.py", "--method", method).items():
         assert rec["verdict"] == "error" and "the coordinates must be the engine's" in rec["message"], (
             cid, n, r, rec["verdict"])
 
@@ -256,8 +249,8 @@ def test_a_quadratic_operator_is_one_function(method):
     residuals no h satisfies.  The check now compares op's value at x with the gradient's, and holds every
     check of op to one graph (s78/own/quadratic_state_symmetric.py, an op symmetric at every call but not one
     op, is refused too)."""
-    recs = dict(_records(HERE / "review5" / "quadratic_stateful_op.py", "--method", method))
-    recs.update(_records(HERE / "own" / "quadratic_state_symmetric.py", "--method", method))
+    recs = dict(records(HERE / "review5" / "quadratic_stateful_op.py", "--method", method))
+    recs.update(records(HERE / "own" / "quadratic_state_symmetric.py", "--method", method))
     for (cid, n, r), rec in recs.items():
         assert rec["verdict"] in ("error", "undecided"), (cid, n, r, rec["verdict"])
 
@@ -268,7 +261,7 @@ def test_the_fifth_reviews_symmetric_operators_tensors_and_statements(method):
     operator) decided rightly, a conformal Casimir of a tensor of declared degree, Inverse and every-point Rank
     probes (refused or undecided where they must be)."""
     for name in ("quadratic_symmetric_ops.py", "tensor_casimir_conformal.py", "rank_inverse_probes.py"):
-        for (cid, n, r), rec in _records(HERE / "review5" / name, "--method", method).items():
+        for (cid, n, r), rec in records(HERE / "review5" / name, "--method", method).items():
             if cid.endswith("-false"):
                 # (the projection's twin is true at r = n, where XXᵀ = I)
                 assert rec["verdict"] not in ("proved", "checked", "numeric") or n == 1 or (
@@ -282,7 +275,7 @@ def test_a_kinetic_energy_that_is_not_a_polynomial_is_refused(method):
     """The stop's last own attempt: T = tr(ẊᵀẎ) + tr R(tr ẊᵀẊ), a call a step's function may make (the resolvent)
     at a parameter that moves with the velocity: not a polynomial, so its third difference does not vanish; the
     false (D-eq) accelerations are refused by every method (free: needs coordinates)."""
-    for (cid, n, r), rec in _records(HERE / "own" / "kinetic_rational.py", "--method", method).items():
+    for (cid, n, r), rec in records(HERE / "own" / "kinetic_rational.py", "--method", method).items():
         assert rec["verdict"] in ("error", "undecided"), (cid, n, r, rec["verdict"])
         if method != "free":
             assert NOT_QUADRATIC in rec["message"], (cid, n, r, rec["message"])

@@ -4,23 +4,14 @@ that assume a property of a claim's argument (dirac_bracket_for read the first t
 quadratic's value called its operator outside the check)."""
 from __future__ import annotations
 
-import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
+from adversary_replay import records
+
 HERE = Path(__file__).parent / "s79"
 REVIEW = HERE / "review"
-
-
-def _records(path: Path, *args: str) -> dict:
-    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                          "--format", "json", *args], capture_output=True, text=True, timeout=600)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
-
 
 DEGREE = "is not a polynomial of degree <= 6"
 
@@ -32,9 +23,9 @@ def test_a_check_nested_in_another_checks_function_draws_symbols_of_its_own(meth
     made of it: the inner degree came out too low, and exact proved a false gradient of a form of degree 7
     (beyond the step's 6) and refuted the true gradient of one of degree 3.  A check made while another
     evaluates the claim's function at its symbols now takes symbols of another depth (scene.engine_check)."""
-    for (cid, n, r), rec in _records(REVIEW / "nested_gradient_proved.py", "--method", method).items():
+    for (cid, n, r), rec in records(REVIEW / "nested_gradient_proved.py", "--method", method).items():
         assert rec["verdict"] == "error" and DEGREE in rec["message"], (cid, n, r, rec["verdict"])
-    for (cid, n, r), rec in _records(REVIEW / "nested_gradient_shared_w.py", "--method", method).items():
+    for (cid, n, r), rec in records(REVIEW / "nested_gradient_shared_w.py", "--method", method).items():
         want = ("fails",) if cid.endswith("-false") else ("proved", "checked", "numeric")
         assert rec["verdict"] in want, (cid, n, r, rec["verdict"])
 
@@ -61,13 +52,13 @@ def test_the_dirac_bracket_of_more_than_two_constraints(method):
     r = 1: the sphere's two and X₁₁, P₁₁) the true Casimir X₁₁ failed and the false 'equals the sphere's
     bracket' was proved.  Every matrix of the list is now read.  (The exact method's equivariant chart puts X at
     e₁, where the four constraints are not second class: an error there, never a wrong verdict.)"""
-    for (cid, n, r), rec in _records(REVIEW / "dirac_more_constraints.py", "--method", method).items():
+    for (cid, n, r), rec in records(REVIEW / "dirac_more_constraints.py", "--method", method).items():
         if cid == "s79-dirac4-casimir-true":
             assert rec["verdict"] in ("proved", "checked", "numeric", "error"), (cid, rec["verdict"])
         else:
             assert rec["verdict"] in ("fails", "error"), (cid, rec["verdict"])
     if method != "exact":
-        recs = _records(REVIEW / "dirac_more_constraints.py", "--method", method)
+        recs = records(REVIEW / "dirac_more_constraints.py", "--method", method)
         assert recs[("s79-dirac4-casimir-true", 3, 1)]["verdict"] in ("checked", "numeric")
         assert recs[("s79-dirac4-equals2-false", 3, 1)]["verdict"] == "fails"
 
@@ -83,7 +74,7 @@ def test_the_value_of_quadratic_and_the_checked_operator_are_one_function(method
     callable read once by the value, once by the gradient) and a tensor evaluated inline next to checked_tensor.
     Every call of such an object, inline or as a step's function, is now held to one graph of its arguments."""
     for name in ("quadratic_value_call.py", "matrixfunction_state.py", "tensor_raw_call.py"):
-        for key, rec in _records(REVIEW / name, "--method", method).items():
+        for key, rec in records(REVIEW / name, "--method", method).items():
             assert rec["verdict"] == "error" and ONE_FUNCTION in rec["message"], (name, key, rec["verdict"])
 
 
@@ -93,7 +84,7 @@ def test_calls_that_pass_one_node_as_two_arguments(method):
     the same way, so a pure tensor passes (Λ(g, g) = 0 proved) and one that tests whether its covectors are one
     object, or changes at its second such call, is refused; so is a quadratic's op that tests its scene (B·u
     on the claim's scene, where the value is taken, u on the check's)."""
-    for (cid, n, r), rec in _records(HERE / "own" / "aliased_calls.py", "--method", method).items():
+    for (cid, n, r), rec in records(HERE / "own" / "aliased_calls.py", "--method", method).items():
         if cid.endswith("-true"):
             assert rec["verdict"] in ("proved", "checked"), (cid, n, r, rec["verdict"])
         else:
@@ -117,7 +108,7 @@ def test_the_second_reviews_routes_around_one_function(method):
     for name in files:
         if name == "dirac_stateful.py" and method == "free":
             continue
-        for (cid, n, r), rec in _records(REVIEW2 / name, "--method", method).items():
+        for (cid, n, r), rec in records(REVIEW2 / name, "--method", method).items():
             if "contradiction" in cid:
                 assert rec["verdict"] == "error" and ONE_FUNCTION in rec["message"], (name, cid, rec["verdict"])
             elif cid.endswith("-true"):

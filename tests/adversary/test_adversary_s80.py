@@ -4,12 +4,11 @@ function a step shapes like its argument held across steps (a stateful kinetic e
 calls, W3b), the Dirac bracket of no constraint (R2), and the stop's own attempt on its change."""
 from __future__ import annotations
 
-import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+from adversary_replay import records
 
 ADVERSARY = Path(__file__).parent
 REVIEW2 = ADVERSARY / "s79" / "review2"
@@ -18,13 +17,6 @@ OWN = ADVERSARY / "s80" / "own"
 ONE_FUNCTION = "a statement about one function"
 USED_AGAIN = "traces to another graph when it is used again"
 TRUE = ("proved", "checked", "numeric")
-
-
-def _records(path: Path, *args: str) -> dict:
-    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                          "--format", "json", *args], capture_output=True, text=True, timeout=600)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
 
 
 def _decided(rec: dict, true: bool, method: str) -> None:
@@ -41,7 +33,7 @@ def test_a_call_whose_argument_is_a_node_the_function_computes(method):
     under every method.  A call now also holds when the reference's graph, the call's scene and arguments put in
     place of the reference's, is the call's node; the false twins stay false."""
     for name in ("subexpr_refusal.py", "lambda2_at_A.py", "quad_subexpr.py"):
-        for (cid, _n, _r), rec in _records(REVIEW2 / name, "--method", method).items():
+        for (cid, _n, _r), rec in records(REVIEW2 / name, "--method", method).items():
             _decided(rec, not cid.endswith("-false"), method)
 
 
@@ -51,7 +43,7 @@ def test_a_stateful_kinetic_energy_in_two_euler_lagrange_calls(method):
     euler_lagrange calls of one system was two Lagrangians, and "the accelerations are those of c = 1 and those of
     c = 2" was proved (free: for all n, r).  A function a step shapes like its argument is now held, at a use
     with an argument of the same shape, to the graph of its first; the control (two objects) stays true."""
-    for (cid, _n, _r), rec in _records(REVIEW2 / "el_stateful.py", "--method", method).items():
+    for (cid, _n, _r), rec in records(REVIEW2 / "el_stateful.py", "--method", method).items():
         if cid.endswith("-contradiction"):
             assert rec["verdict"] == "error" and USED_AGAIN in rec["message"], (cid, method, rec["verdict"])
         else:
@@ -62,7 +54,7 @@ def test_a_stateful_kinetic_energy_in_two_euler_lagrange_calls(method):
 def test_the_dirac_bracket_of_no_constraint_is_the_canonical_one(method):
     """Stop 79's second review, R2: dirac_bracket_for of an empty list (or of 0×0 matrices) inverted a 0×0
     matrix and gave an error; it is the canonical bracket."""
-    for (cid, _n, _r), rec in _records(REVIEW2 / "dirac_shapes.py", "--method", method).items():
+    for (cid, _n, _r), rec in records(REVIEW2 / "dirac_shapes.py", "--method", method).items():
         _decided(rec, not cid.endswith("-false"), method)
 
 
@@ -73,7 +65,7 @@ def test_a_reference_whose_argument_the_function_computes_cannot_vouch_for_two_f
     graph, read by shape, has the first branch's form, and by substitution the second's: the two statements
     about T(y; a, b) and T(z; c, d) contradict each other, and the claim is refused whether or not a
     checked_tensor step's function is there too.  The engine's lie_poisson at the same calls is true."""
-    for (cid, _n, _r), rec in _records(OWN / "conflated_reference.py", "--method", method).items():
+    for (cid, _n, _r), rec in records(OWN / "conflated_reference.py", "--method", method).items():
         if "conflated" in cid:
             assert rec["verdict"] == "error" and ONE_FUNCTION in rec["message"], (cid, method, rec["verdict"])
         else:
@@ -85,7 +77,7 @@ def test_poisson_checks_of_a_form_that_is_no_bivector(method):
     """The stop's own attempt: <x, [a, b]> + tr(a)tr(b)(tr a − tr b) is antisymmetric, of degree 1 in x, and
     its jacobiator of linear functions is 0, but it is not bilinear: poisson_checks proved it Poisson (free for
     all n, r).  poisson_checks now checks additivity in a covector as well."""
-    for (cid, _n, _r), rec in _records(OWN / "nonbilinear.py", "--method", method).items():
+    for (cid, _n, _r), rec in records(OWN / "nonbilinear.py", "--method", method).items():
         _decided(rec, cid != "nonbilinear-poisson", method)
         if cid == "nonbilinear-poisson" and method != "free":
             assert (rec.get("witness") or {}).get("check", "").startswith("Λ(a + c, b)"), rec
@@ -118,7 +110,7 @@ def test_the_reviews_routes_around_the_one_function_rule(method):
     controls = {"s80r-alias-control-true": True, "s80r-alias-scene-true": True, "s80r-alias-scene-false": False,
                 "s80r-el-keyorder-control": True, "s80r-deriv-control-true": True, "s80r-quad-unread-control-true": True}
     for name, ids in contradictions.items():
-        for (cid, n, r), rec in _records(REVIEW / name, "--method", method).items():
+        for (cid, n, r), rec in records(REVIEW / name, "--method", method).items():
             if cid in ids:
                 _refused(rec, method)
             elif cid in controls:
@@ -131,7 +123,7 @@ def test_the_reviews_order_dependent_refusal(method):
     first eight calls could be the reference); the reference is now a call at arguments the function does not
     compute where there is one.  R1 stays: {Λ(a, b)|_{ab}, Λ(a, b)|_{ba}} has no call that can be the reference
     (each argument is a node the form computes), and is refused (an error, never a verdict)."""
-    recs = _records(REVIEW / "refusals.py", "--method", method)
+    recs = records(REVIEW / "refusals.py", "--method", method)
     for (cid, _n, _r), rec in recs.items():
         if cid.startswith("s80r-ref-nine"):
             _decided(rec, True, method)
@@ -147,7 +139,7 @@ def test_the_class_sweeps_routes(method):
     for name, wrong in (("c4_calls_after_check.py", ("i4-false", "ri4-false", "sc4-false", "r4-false")),
                         ("c4_like_signature.py", ("l4-order-contradiction",)),
                         ("c4_like_derivative.py", ("ld4-order-false",))):
-        for (cid, _n, _r), rec in _records(CLASSES / name, "--method", method).items():
+        for (cid, _n, _r), rec in records(CLASSES / name, "--method", method).items():
             if cid in wrong:
                 assert rec["verdict"] in ("error", "fails", "undecided"), (cid, method, rec["verdict"])
 
@@ -158,7 +150,7 @@ def test_a_declared_gradient_is_checked_against_its_value(method):
     the declared gradient A had a nonzero Lie–Poisson bracket (free: for all n, r).  Every gradient is checked
     where it is taken (brackets.gradient_check): by reverse mode at the point on a coordinate scene, by cyclic
     differentiation on the dimension-free one.  Declared gradients that are right stay decided."""
-    for (cid, _n, _r), rec in _records(OWN / "declared_gradient.py", "--method", method).items():
+    for (cid, _n, _r), rec in records(OWN / "declared_gradient.py", "--method", method).items():
         if cid in ("mf-zero-with-gradient", "mf-cubic-declared-false", "mf-entry-zero-gradient"):
             assert rec["verdict"] in ("error", "undecided"), (cid, method, rec["verdict"])
             if not (cid == "mf-entry-zero-gradient" and method == "free"):     # free: needs coordinates
@@ -176,11 +168,11 @@ def test_the_second_reviews_routes_around_the_gradient_check(method):
     values through their raw fields, apart from the claim's calls (W2: a part whose value tests its point had its
     gradient checked against another value); a subclass overriding grad handed the engine an unchecked gradient
     (W3).  The parts' values are their held calls, and the engine takes every gradient through MatrixFunction.grad."""
-    for (cid, _n, _r), rec in _records(REVIEW2_80 / "combined.py", "--method", method).items():
+    for (cid, _n, _r), rec in records(REVIEW2_80 / "combined.py", "--method", method).items():
         if cid.endswith("-contradiction"):
             _refused(rec, method)
         elif cid == "h4-comb-add-control-true":
             _decided(rec, True, method)
-    for (cid, _n, _r), rec in _records(REVIEW2_80 / "overrides.py", "--method", method).items():
+    for (cid, _n, _r), rec in records(REVIEW2_80 / "overrides.py", "--method", method).items():
         if cid in ("h4-ov-grad-false", "h4-ov-dataclass-false"):
             assert rec["verdict"] in ("error", "undecided", "fails"), (cid, method, rec["verdict"])

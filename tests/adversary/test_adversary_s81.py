@@ -3,25 +3,17 @@ along the flow of a derivative taken through it, and refused inside the function
 review, W1: the check was a constant step, so its derivative and its adjoint were taken as 0)."""
 from __future__ import annotations
 
-import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+from adversary_replay import records
 
 ADVERSARY = Path(__file__).parent
 REVIEW2_80 = ADVERSARY / "s80" / "review2"
 
 TRUE = ("proved", "checked", "numeric")
 HONEST = ("error", "undecided", "inconclusive")
-
-
-def _records(path: Path, *args: str) -> dict:
-    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                          "--format", "json", *args], capture_output=True, text=True, timeout=600)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
 
 
 #: the truth of each claim of the three files (derived by hand in their docstrings)
@@ -45,7 +37,7 @@ def test_a_check_at_the_point_is_no_check_of_its_derivative(name, method):
     Along a flow the check is now made by the scene's dual numbers (both parts), and inside the function of
     s.gradient it is refused; no claim gets a wrong verdict, the honest ones are decided."""
     size = [] if method == "free" else ["--size", "3,2"]
-    recs = _records(REVIEW2_80 / name, "--method", method, *size)
+    recs = records(REVIEW2_80 / name, "--method", method, *size)
     assert {cid for cid, _n, _r in recs} == set(TRUTH[name])
     for (cid, n, r), rec in recs.items():
         v, true = rec["verdict"], TRUTH[name][cid]
@@ -63,7 +55,7 @@ def test_the_free_method_checks_both_parts_of_a_declared_gradient_along_a_flow()
     """On the dimension-free scene's tangent scene the declared gradient is compared with the value's in both parts
     (the gradient of the value's tangent part is G's tangent part): the honest claim is proved for all n, r, the
     gradients right at the point only are refused."""
-    recs = _records(REVIEW2_80 / "tan_grad.py", "--method", "free")
+    recs = records(REVIEW2_80 / "tan_grad.py", "--method", "free")
     assert recs[("h4-tan-honest-true", None, None)]["verdict"] == "proved"
     for cid in ("h4-tan-capture-false", "h4-tan-capture-truetwin", "h4-tan-bracket-false"):
         rec = recs[(cid, None, None)]
@@ -81,7 +73,7 @@ def test_a_declared_gradient_at_a_point_that_moves_along_the_flow(method):
     the value's gradient there) and decide the honest claim; a gradient right at the point only (it keeps the
     claim's x) is refused; the dimension-free method refuses a moving point (it would need the Hessian)."""
     size = [] if method == "free" else ["--size", "3,2"]
-    recs = {cid: rec for (cid, _n, _r), rec in _records(OWN / "moving_point.py", "--method", method, *size).items()}
+    recs = {cid: rec for (cid, _n, _r), rec in records(OWN / "moving_point.py", "--method", method, *size).items()}
     if method == "free":
         assert all(r["verdict"] == "undecided" and "moves along the flow" in r.get("message", "")
                    for r in recs.values()), [(c, r["verdict"]) for c, r in recs.items()]
@@ -98,7 +90,7 @@ def test_quadratics_operator_checked_along_a_flow_on_every_scene(method):
     crashed (an internal error), and now compares both parts.  The contradiction is refused, the honest claim
     decided (free: proved for all n, r)."""
     size = [] if method == "free" else ["--size", "3,2"]
-    recs = {cid: rec for (cid, _n, _r), rec in _records(OWN / "quad_flow_free.py", "--method", method, *size).items()}
+    recs = {cid: rec for (cid, _n, _r), rec in records(OWN / "quad_flow_free.py", "--method", method, *size).items()}
     assert recs["s81-qff-honest"]["verdict"] in TRUE, recs["s81-qff-honest"]
     for cid in ("s81-qff-false", "s81-qff-truetwin"):
         assert recs[cid]["verdict"] in HONEST and "linear and symmetric" in recs[cid].get("message", ""), (
@@ -116,13 +108,13 @@ def test_the_reviews_false_refusals_are_decided(method):
     tape.  The tape now gives way to forward passes (the scene's dual numbers check both parts) or to a basis, and the
     claims are decided (their truth: the files' docstrings and logs/truth_check.log)."""
     size = [] if method == "free" else ["--size", "3,2"]
-    recs = {cid: rec for (cid, _n, _r), rec in _records(REVIEW / "refusals.py", "--method", method, *size).items()}
+    recs = {cid: rec for (cid, _n, _r), rec in records(REVIEW / "refusals.py", "--method", method, *size).items()}
     for cid in ("r81-ref-bb-true", "r81-ref-jac-true") + (() if method == "free" else ("r81-ref-sb-true",)):
         assert recs[cid]["verdict"] in TRUE, (cid, method, recs[cid]["verdict"], recs[cid].get("message", "")[:300])
     for cid in ("r81-ref-bb-false", "r81-ref-jac-false", "r81-ref-sb-false"):
         assert recs[cid]["verdict"] == ("undecided" if method == "free" else "fails"), (cid, method, recs[cid])
     if method != "free":
-        recs = {cid: r for (cid, _n, _r), r in _records(REVIEW / "natural.py", "--method", method, *size).items()}
+        recs = {cid: r for (cid, _n, _r), r in records(REVIEW / "natural.py", "--method", method, *size).items()}
         assert recs["r81-nat-grad-true"]["verdict"] in TRUE and recs["r81-nat-grad-false"]["verdict"] == "fails"
 
 
@@ -138,7 +130,7 @@ def test_a_check_on_the_claims_scene_at_a_moving_point_is_refused_clearly(method
              "r81-fs-true": True, "r81-fs-false": False, "r81-fs2-true": True, "r81-fs2-false": False,
              "r81-cv-true": True, "r81-cv-false": False, "r81-cv2-true": True, "r81-cv2-false": False}
     for name in ("reverse_outer.py", "outer_check.py", "free_strip.py", "closure_value.py"):
-        for (cid, _n, _r), rec in _records(REVIEW / name, "--method", method, *size).items():
+        for (cid, _n, _r), rec in records(REVIEW / name, "--method", method, *size).items():
             if cid not in truth:
                 continue
             v = rec["verdict"]
@@ -153,7 +145,7 @@ def test_a_function_of_a_rectangular_matrix_has_a_transposed_gradient(method):
     r81-nat-nr, refused because the check's zero had the point's shape); a declared gradient of the wrong value
     is refused."""
     size = [] if method == "free" else ["--size", "3,2"]
-    recs = {c: r for (c, _n, _r), r in _records(OWN / "rectangular_gradient.py", "--method", method, *size).items()}
+    recs = {c: r for (c, _n, _r), r in records(OWN / "rectangular_gradient.py", "--method", method, *size).items()}
     assert recs["s81-nr-true"]["verdict"] in TRUE, recs["s81-nr-true"]
     assert recs["s81-nr-false"]["verdict"] == ("undecided" if method == "free" else "fails")
     assert recs["s81-nr-wrong-declared"]["verdict"] in HONEST and "not the gradient" in recs[
@@ -173,7 +165,7 @@ def test_the_second_reviews_routes_through_the_fallbacks(method):
     -true are true, -false false: the files' docstrings and logs/truth_check.log), and no run ends in a crash."""
     size = [] if method == "free" else ["--size", "3,2"]
     for name in ("tape_on_dual.py", "tape_fallback.py", "mixed_levels.py", "second.py", "ambient_mod.py"):
-        for (cid, _n, _r), rec in _records(REVIEW2 / name, "--method", method, *size).items():
+        for (cid, _n, _r), rec in records(REVIEW2 / name, "--method", method, *size).items():
             v, msg = rec["verdict"], rec.get("message", "")
             if cid.endswith("-true"):
                 assert v != "fails", (name, cid, method, msg[:300])
@@ -192,7 +184,7 @@ def test_the_hidden_trials_gradients_through_gradients_are_decided(method):
     tape now gives way to forward passes, and they are decided (p81-: true, q81-: false)."""
     size = [] if method == "free" else ["--size", "3,2"]
     for name in ("probes4.py", "probes5.py"):
-        for (cid, _n, _r), rec in _records(HIDDEN / name, "--method", method, *size).items():
+        for (cid, _n, _r), rec in records(HIDDEN / name, "--method", method, *size).items():
             v = rec["verdict"]
             if cid.startswith("q81-"):
                 assert v == ("undecided" if method == "free" else "fails"), (cid, method, v)
@@ -212,7 +204,7 @@ def test_a_functions_value_swapped_after_its_gradient_was_checked(method):
     function object its field held at each call, so the claim computed with another function than the one checked
     (the zero function with a nonzero bracket came back).  The holds are now under the MatrixFunction itself."""
     size = [] if method == "free" else ["--size", "3,2"]
-    recs = {c: r for (c, _n, _r), r in _records(CLASSES / "c4_state.py", "--method", method, *size).items()}
+    recs = {c: r for (c, _n, _r), r in records(CLASSES / "c4_state.py", "--method", method, *size).items()}
     for cid in ("c4-swap-false", "c4-swapsum-false", "c4-swapbr-false", "c4-cell-false", "c4-twograd-false",
                 "c4-prop-false"):
         assert recs[cid]["verdict"] not in TRUE, (cid, method, recs[cid]["verdict"])
@@ -231,14 +223,14 @@ def test_copies_of_one_function_and_a_subclass_call(method):
     The value is now held under the instance and under its value's function.  A subclass overriding __call__ was
     reached by the engine's pullback (W2, older): the pullback now evaluates the held value."""
     size = [] if method == "free" else ["--size", "3,2"]
-    for (cid, _n, _r), rec in _records(REVIEW3 / "w.py", "--method", method, *size).items():
+    for (cid, _n, _r), rec in records(REVIEW3 / "w.py", "--method", method, *size).items():
         v = rec["verdict"]
         if cid.endswith("-false"):
             assert v not in TRUE, (cid, method, v)
         else:
             assert v in TRUE, (cid, method, v, rec.get("message", "")[:300])
     for name in ("h.py", "h2.py"):
-        for (cid, _n, _r), rec in _records(REVIEW3 / name, "--method", method, *size).items():
+        for (cid, _n, _r), rec in records(REVIEW3 / name, "--method", method, *size).items():
             assert rec["verdict"] != "error" or cid.startswith("h-nr-"), (name, cid, method, rec.get("message", "")[:300])
 
 
@@ -247,7 +239,7 @@ def test_a_gradient_written_with_the_points_shape(method):
     """The stop's last own attempt (s81/own/forgot_transpose.py): the gradient of a function of an n×r point written
     n×r (2y for 2yᵀ), as a careless user would, is refused at every size (r = n included, where the shapes agree and
     the types do not); the right one is decided."""
-    for (cid, _n, _r), rec in _records(OWN / "forgot_transpose.py", "--method", method).items():
+    for (cid, _n, _r), rec in records(OWN / "forgot_transpose.py", "--method", method).items():
         if cid == "s81-ft-false":
             assert rec["verdict"] in HONEST, (cid, method, rec["verdict"])
         else:

@@ -14,7 +14,6 @@
 """
 from __future__ import annotations
 
-import json
 import subprocess
 import sys
 from pathlib import Path
@@ -24,21 +23,16 @@ import symengine as se
 
 from stiefelsym.certificate_check import may_vanish_at_a_size
 
+from adversary_replay import records_by_variant
+
 S82 = Path(__file__).parent / "s82"
-
-
-def _records(path: Path, *args: str) -> dict:
-    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                          "--format", "json", *args], capture_output=True, text=True, timeout=600)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("variant"), r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
 
 
 def test_an_undecided_rank_is_not_refuted():
     """Rank(M + z M, 6) with z = (tr XᵀX − r)^(2^64) = 0 on V(n, r): true.  Its minors' degree bound (~1e20) keeps
     the points of prime fields from reaching the false-pass target: exact said `fails` with no witness."""
-    recs = _records(S82 / "classes" / "c5_rank_degree.py", "c5-deg-true", "c5-deg-small-true", "c5-deg-small-false",
-                    "--method", "exact", "--size", "2,1")
+    recs = records_by_variant(S82 / "classes" / "c5_rank_degree.py", "c5-deg-true", "c5-deg-small-true",
+                              "c5-deg-small-false", "--method", "exact", "--size", "2,1")
     got = {cid: rec["verdict"] for (cid, _v, _n, _r), rec in recs.items()}
     assert got == {"c5-deg-true": "inconclusive", "c5-deg-small-true": "proved", "c5-deg-small-false": "fails"}, got
     msg = recs[("c5-deg-true", None, 2, 1)]["message"]
@@ -49,8 +43,8 @@ def test_a_correction_does_not_see_what_the_printed_claim_left():
     """corr-state's printed claim sets a module flag that its correction reads (XᵀX = I_r with the flag, XXᵀ = I_n
     without).  Traced in a process of its own, the correction is the function its file defines: XXᵀ = I_n, false at
     r < n, as the same function registered alone (corr-state-alone)."""
-    recs = _records(S82 / "classes" / "c4_corrections.py", "corr-state", "corr-state-alone", "--method", "exact",
-                    "--size", "3,1")
+    recs = records_by_variant(S82 / "classes" / "c4_corrections.py", "corr-state", "corr-state-alone",
+                              "--method", "exact", "--size", "3,1")
     verdicts = {(cid, v): rec["verdict"] for (cid, v, _n, _r), rec in recs.items()}
     assert verdicts == {("corr-state", None): "fails", ("corr-state-alone", None): "fails",
                         ("corr-state", "XᵀX = I_r in place of XXᵀ = I_n"): "fails"}, verdicts
@@ -62,7 +56,7 @@ EL_SCALED = {"b3-el-c1": True, "b3-el-n": True, "b3-el-n-minus-r": False, "b3-el
 
 
 def test_no_division_by_a_size_that_may_vanish_in_a_free_proof():
-    recs = _records(S82 / "free" / "b3_el_scaled.py", "--method", "free")
+    recs = records_by_variant(S82 / "free" / "b3_el_scaled.py", "--method", "free")
     for (cid, _v, _n, _r), rec in recs.items():
         proved = rec["verdict"] == "proved"
         assert proved == EL_SCALED[cid], (cid, rec["verdict"], rec["message"][:300])
@@ -73,7 +67,7 @@ def test_no_division_by_a_size_that_may_vanish_in_a_free_proof():
 @pytest.mark.parametrize("name", ["b1_sizes.py", "b2_poles.py"])
 def test_no_resolvent_identity_across_sizes(name):
     """R(λ) and R(λ + n − r): the resolvent identity divides by n − r, 0 at r = n."""
-    recs = _records(S82 / "free" / name, "--method", "free")
+    recs = records_by_variant(S82 / "free" / name, "--method", "free")
     for (cid, _v, _n, _r), rec in recs.items():
         if "res-nr" in cid or "commute" in cid or "ntrace" in cid or "product" in cid:
             assert rec["verdict"] != "proved", (cid, rec["message"][:300])
@@ -89,11 +83,11 @@ def test_the_checker_rejects_a_denominator_that_may_vanish_at_a_size():
 
 def test_the_magnetic_form_is_a_field_strength():
     """F = E1∧E2 (twisted.magnetic_matrix) given to a twisted flow, alone and in sums and multiples."""
-    recs = _records(S82 / "hidden" / "probes_f.py", "p82f-J-plain", "p82f-two-J", "p82f-skew-part",
-                    "p82f-matrix-times-scalar", "--method", "exact", "--size", "3,2")
+    recs = records_by_variant(S82 / "hidden" / "probes_f.py", "p82f-J-plain", "p82f-two-J", "p82f-skew-part",
+                              "p82f-matrix-times-scalar", "--method", "exact", "--size", "3,2")
     for key, rec in recs.items():
         assert rec["verdict"] == "proved", (key, rec["message"][:300])
-    recs = _records(S82 / "hidden" / "probes_f.py", "p82f-J-plain", "p82f-two-J", "--method", "free")
+    recs = records_by_variant(S82 / "hidden" / "probes_f.py", "p82f-J-plain", "p82f-two-J", "--method", "free")
     for key, rec in recs.items():
         assert rec["verdict"] == "proved", (key, rec["message"][:300])
 
@@ -116,7 +110,7 @@ def test_a_forged_claim_id_is_rejected_alone():
 def test_a_divisor_of_one_sign_in_the_sizes_is_accepted():
     """The review of the door (s82/review, F2): n + r and −2n are nonzero at every size; the door refused them (the
     constant term 0 that symengine lists, and a sign), so true claims the engine proved before were undecided."""
-    recs = _records(S82 / "review" / "r_resolvents.py", "--method", "free")
+    recs = records_by_variant(S82 / "review" / "r_resolvents.py", "--method", "free")
     for (cid, _v, _n, _r), rec in recs.items():
         assert (rec["verdict"] == "proved") == (not cid.endswith("-false")), (cid, rec["verdict"], rec["message"][:300])
     n, r = se.symbols("n r")
@@ -129,7 +123,7 @@ def test_the_typed_magnetic_form_keeps_its_negative_control(method):
     """The stop's own attempt (s82/own/magnetic_false.py): with F typed, the flows of F = J and F = 2J must still
     differ (fails at fixed sizes, never proved by free), and F = J is the default F."""
     size = [] if method == "free" else ["--size", "3,2"]
-    recs = _records(S82 / "own" / "magnetic_false.py", "--method", method, *size)
+    recs = records_by_variant(S82 / "own" / "magnetic_false.py", "--method", method, *size)
     got = {cid: rec["verdict"] for (cid, _v, _n, _r), rec in recs.items()}
     assert got["s82own-twice-J-false"] == ("undecided" if method == "free" else "fails"), got
     assert got["s82own-default-J-true"] in ("proved", "checked", "numeric"), got

@@ -20,26 +20,20 @@
 """
 from __future__ import annotations
 
-import json
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from adversary_replay import records_by_variant
+
 S83 = Path(__file__).parent / "s83"
-
-
-def _records(path: Path, *args: str) -> dict:
-    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                          "--format", "json", *args], capture_output=True, text=True, timeout=600)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("variant"), r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
 
 
 @pytest.mark.parametrize("method", ["exact", "modular", "float"])
 def test_an_entry_times_j_is_a_field_strength(method):
-    recs = _records(S83 / "own" / "entry_field_strength.py", "--method", method, "--size", "3,2")
+    recs = records_by_variant(S83 / "own" / "entry_field_strength.py", "--method", method, "--size", "3,2")
     verdicts = {key[0]: rec["verdict"] for key, rec in recs.items()}
     assert verdicts["s83-entry-times-J"] == {"exact": "proved", "modular": "checked", "float": "numeric"}[method]
     assert verdicts["s83-entry-times-J-false"] == "fails"
@@ -48,7 +42,7 @@ def test_an_entry_times_j_is_a_field_strength(method):
 
 @pytest.mark.parametrize("method", ["float", "ball"])
 def test_a_solved_multiplier_that_is_zero_is_resolved(method):
-    recs = _records(S83 / "own" / "solved_zero.py", "--method", method)
+    recs = records_by_variant(S83 / "own" / "solved_zero.py", "--method", method)
     for (cid, _v, n, r), rec in recs.items():
         want = "numeric" if cid == "s83-pi-zero-twisted" else "fails"
         assert rec["verdict"] == want, (cid, n, r, rec["message"][:300])
@@ -58,10 +52,10 @@ def test_jobs_of_one_file_share_no_state():
     """fk-first and fk-count are one function (a branch on the number of forks an at-fork hook counted in the
     importing process); sh-read reads a byte sh-set wrote into a shared mapping made at import; sh-corr's
     correction reads a byte its printed claim's trace wrote.  Each is traced alone now: the false branch."""
-    recs = _records(S83 / "classes" / "c4_fork_hooks.py", "--method", "exact", "--size", "3,2")
+    recs = records_by_variant(S83 / "classes" / "c4_fork_hooks.py", "--method", "exact", "--size", "3,2")
     verdicts = {key[0]: rec["verdict"] for key, rec in recs.items()}
     assert verdicts["fk-first"] == verdicts["fk-count"] == "fails", verdicts
-    recs = _records(S83 / "classes" / "c4_shared_jobs.py", "--method", "exact", "--size", "3,2")
+    recs = records_by_variant(S83 / "classes" / "c4_shared_jobs.py", "--method", "exact", "--size", "3,2")
     verdicts = {(key[0], key[1]): rec["verdict"] for key, rec in recs.items()}
     assert verdicts[("sh-set", None)] == "proved"
     assert verdicts[("sh-read", None)] == verdicts[("sh-pipe-r", None)] == "fails", verdicts
@@ -71,7 +65,7 @@ def test_jobs_of_one_file_share_no_state():
 
 @pytest.mark.parametrize("method", ["exact", "modular"])
 def test_sums_and_products_a_fused_trace_skips_are_still_checked(method):
-    recs = _records(S83 / "review" / "c_types.py", "--method", method, "--size", "3,2", "--size", "3,3")
+    recs = records_by_variant(S83 / "review" / "c_types.py", "--method", method, "--size", "3,2", "--size", "3,3")
     for (cid, _v, n, r), rec in recs.items():
         want = "error" if "control" not in cid else ("proved" if method == "exact" else "checked")
         assert rec["verdict"] == want, (cid, n, r, rec["verdict"], rec["message"][:300])
@@ -85,7 +79,7 @@ def test_a_file_whose_import_is_not_deterministic_is_refused():
 
 
 def test_a_rank_above_the_matrix_size_is_refuted_at_once():
-    recs = _records(S83 / "hidden" / "sec2c_hidden.py", "h3-constraints-rank-everywhere-twin", "--method", "exact",
-                    "--size", "4,2", "--size", "4,3")
+    recs = records_by_variant(S83 / "hidden" / "sec2c_hidden.py", "h3-constraints-rank-everywhere-twin",
+                              "--method", "exact", "--size", "4,2", "--size", "4,3")
     for key, rec in recs.items():
         assert rec["verdict"] == "fails" and "no rank exceeds its full size" in rec["certificate"], (key, rec)

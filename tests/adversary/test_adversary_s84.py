@@ -31,25 +31,18 @@
 """
 from __future__ import annotations
 
-import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
+from adversary_replay import namespaces, records_by_variant
+
 S84 = Path(__file__).parent / "s84"
 
 
-def _records(path: Path, *args: str) -> dict:
-    out = subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                          "--format", "json", *args], capture_output=True, text=True, timeout=600)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("variant"), r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
-
-
 def test_free_divisions_are_refused_in_words_or_proved():
-    recs = {key[0]: rec for key, rec in _records(S84 / "own" / "free_division.py", "--method", "free").items()}
+    recs = {key[0]: rec
+            for key, rec in records_by_variant(S84 / "own" / "free_division.py", "--method", "free").items()}
     for cid in ("s84-div-trace", "s84-div-trace-f", "s84-inv-trace"):
         rec = recs[cid]
         assert rec["verdict"] == "undecided", (cid, rec["message"])
@@ -66,7 +59,7 @@ def test_free_divisions_are_refused_in_words_or_proved():
 
 @pytest.mark.parametrize("method", ["exact", "modular", "float"])
 def test_fixed_size_methods_decide_the_divisions(method):
-    recs = _records(S84 / "own" / "free_division.py", "--method", method)
+    recs = records_by_variant(S84 / "own" / "free_division.py", "--method", method)
     good = {"exact": "proved", "modular": "checked", "float": "numeric"}[method]
     for (cid, _v, n, r), rec in recs.items():
         if cid == "s84-rank-negative" and method == "float":
@@ -85,16 +78,16 @@ S82_EMPTY = Path(__file__).parent / "s82" / "free" / "b9_empty.py"
 
 
 def test_free_checks_empty_at_r1_are_refused(tmp_path):
-    recs = {key[0]: rec for key, rec in _records(S82_EMPTY, "--method", "free").items()}
+    recs = {key[0]: rec for key, rec in records_by_variant(S82_EMPTY, "--method", "free").items()}
     for cid in ("b9-lead-gram", "b9-lead-gram-false", "b9-lead-er"):
         assert recs[cid]["verdict"] == "error", (cid, recs[cid]["message"])
         assert "empty at r = 1" in recs[cid]["message"]
-    exact = _records(S82_EMPTY, "--method", "exact", "--size", "3,1")
+    exact = records_by_variant(S82_EMPTY, "--method", "exact", "--size", "3,1")
     assert {rec["verdict"] for rec in exact.values()} == {"error"}
     # declared for r >= 2: proved for every n, r there (the false twin is left to the fixed-size methods)
     stated = tmp_path / "b9_r2.py"
     stated.write_text(S82_EMPTY.read_text().replace("SZ = admissible(n_max=4)", "SZ = admissible(n_max=4, r_min=2)"))
-    recs = {key[0]: rec for key, rec in _records(stated, "--method", "free").items()}
+    recs = {key[0]: rec for key, rec in records_by_variant(stated, "--method", "free").items()}
     assert recs["b9-lead-gram"]["verdict"] == "proved" and recs["b9-lead-er"]["verdict"] == "proved"
     assert recs["b9-lead-gram-false"]["verdict"] == "undecided"
     # a condition (where=) is read up to n = 64 only: r > 1 there is no proof for every n (h3's W1: r > 1 or n > 3
@@ -102,19 +95,19 @@ def test_free_checks_empty_at_r1_are_refused(tmp_path):
     cond = tmp_path / "b9_where.py"
     cond.write_text(S82_EMPTY.read_text().replace("SZ = admissible(n_max=4)",
                                                   "SZ = admissible(n_max=4, where=lambda n, r: r > 1)"))
-    recs = {key[0]: rec for key, rec in _records(cond, "--method", "free").items()}
+    recs = {key[0]: rec for key, rec in records_by_variant(cond, "--method", "free").items()}
     assert recs["b9-lead-gram"]["verdict"] == "undecided" and "r_min=2" in recs["b9-lead-gram"]["message"]
     beyond = tmp_path / "b9_beyond.py"
     beyond.write_text(S82_EMPTY.read_text().replace("SZ = admissible(n_max=4)",
                                                     "SZ = admissible(n_max=3, where=lambda n, r: r > 1 or n > 3)"))
-    recs = {key[0]: rec for key, rec in _records(beyond, "--method", "free").items()}
+    recs = {key[0]: rec for key, rec in records_by_variant(beyond, "--method", "free").items()}
     assert recs["b9-lead-gram"]["verdict"] == "error" and "empty at r = 1" in recs["b9-lead-gram"]["message"]
 
 
 def test_free_divisors_nonzero_on_every_size_are_accepted():
     """h3's F1: divisors that are never 0 on n >= r >= 1 although their coefficients in n, r have both signs
     (n − r + 1, 2n − r, n² − nr + r²) were refused; with r = 1 + e, n = 1 + e + d they pass, n − r does not."""
-    recs = {key[0]: rec for key, rec in _records(S84 / "h3" / "h3_div.py", "--method", "free").items()}
+    recs = {key[0]: rec for key, rec in records_by_variant(S84 / "h3" / "h3_div.py", "--method", "free").items()}
     for cid in ("h3-a-nr1", "h3-a-2nr", "h3-a-quad", "h3-a-negpow"):
         assert recs[cid]["verdict"] == "proved", (cid, recs[cid]["message"])
 
@@ -125,7 +118,7 @@ H1 = S84 / "h1"
 def test_free_size_poles_behind_a_common_denominator_are_refused():
     ids = ["h1-pole-rn", "h1-pole-rn-x", "h1-pole-2r", "h1-pole-nested", "h1-pole-rn-old", "h1-lam-pole",
            "h1-nested-ok", "h1-size-ok", "h1-negpow", "h1-lam-n", "h1-num-first", "h1-fraction"]
-    recs = {key[0]: rec for key, rec in _records(H1 / "free_div.py", *ids, "--method", "free").items()}
+    recs = {key[0]: rec for key, rec in records_by_variant(H1 / "free_div.py", *ids, "--method", "free").items()}
     for cid in ids[:6]:
         assert recs[cid]["verdict"] == "undecided", (cid, recs[cid]["message"])
         assert "may vanish at some n, r" in recs[cid]["message"]
@@ -133,30 +126,25 @@ def test_free_size_poles_behind_a_common_denominator_are_refused():
         assert recs[cid]["verdict"] == "proved", (cid, recs[cid]["message"])
     # the negative controls: false twins through the same divisions are never proved (exact refutes them)
     twins = ["h1-pole-2r-f", "h1-negpow-f", "h1-num-first-f", "h1-lam-mix-f", "h1-fraction-f", "h1-zero-rat-coef-f"]
-    recs = {key[0]: rec for key, rec in _records(H1 / "free_div.py", *twins, "--method", "free").items()}
+    recs = {key[0]: rec for key, rec in records_by_variant(H1 / "free_div.py", *twins, "--method", "free").items()}
     assert {cid: recs[cid]["verdict"] for cid in twins} == dict.fromkeys(twins, "undecided")
-    exact = _records(H1 / "free_div.py", *twins[1:], "--method", "exact", "--size", "3,2")
+    exact = records_by_variant(H1 / "free_div.py", *twins[1:], "--method", "exact", "--size", "3,2")
     assert {rec["verdict"] for rec in exact.values()} == {"fails"}, [(k, r["message"][:80]) for k, r in exact.items()]
 
 
 def test_free_division_by_an_identically_zero_number_is_an_error():
     ids = ["h1-q-zero", "h1-q-minus", "h1-kappa-zero", "h1-lam-lam"]
-    recs = {key[0]: rec for key, rec in _records(H1 / "free_div.py", *ids, "--method", "free").items()}
+    recs = {key[0]: rec for key, rec in records_by_variant(H1 / "free_div.py", *ids, "--method", "free").items()}
     for cid in ids:
         assert recs[cid]["verdict"] == "error" and "identically zero" in recs[cid]["message"], recs[cid]["message"]
-
-
-def _namespaces() -> bool:
-    from stiefelsym.run.sandbox import namespaces_available
-    return namespaces_available()
 
 
 def test_the_tracing_process_memory_is_not_writable_by_the_import():
     """h1's file gives Tracer.__add__ the code of __sub__ in its parent (the tracing process) when it can: the
     false claims must fail, the control is proved."""
-    if not _namespaces():
+    if not namespaces():
         pytest.skip("the file writes only into a tracing process that is PID 1 (a PID namespace)")
-    recs = _records(H1 / "patch_parent.py", "--method", "exact", "--size", "3,2")
+    recs = records_by_variant(H1 / "patch_parent.py", "--method", "exact", "--size", "3,2")
     verdicts = {key[0]: rec["verdict"] for key, rec in recs.items()}
     assert verdicts["h1-seal-p-plus-p"] == "fails"
     assert verdicts["h1-seal-xtx-plus-ir"] == "fails"
@@ -168,11 +156,11 @@ def test_no_ancestor_of_the_import_is_readable(confine, monkeypatch):
     import os
     if confine == "spawn" and os.geteuid() == 0:
         pytest.skip("as root, without namespaces, a process that is not dumpable is still readable (CAP_SYS_PTRACE)")
-    if confine == "namespaces" and not _namespaces():
+    if confine == "namespaces" and not namespaces():
         pytest.skip("no namespaces here")
     if confine == "spawn":
         monkeypatch.setenv("STIEFELSYM_CONFINE", "spawn")
-    recs = _records(S84 / "own" / "vm_read_ancestors.py", "--method", "exact")
+    recs = records_by_variant(S84 / "own" / "vm_read_ancestors.py", "--method", "exact")
     assert {rec["verdict"] for rec in recs.values()} == {"proved"}, [rec["message"] for rec in recs.values()]
 
 
@@ -183,8 +171,8 @@ def test_hidden_section6_notes_replay():
     """h2's notes on §6 (no wrong verdict, two slips of the paper the catalog does not list yet): Θ is invariant
     under the reflection of O(r) \\ SO(r) (the Z2 of the covering; the twin fails), and the pencil bracket at
     λ₁ + λ₂ = 0 has rank n² − n at every point (no Lie–Poisson bracket of gl(n) there)."""
-    recs = _records(H2, "h2-theta-reflection", "h2-theta-reflection-twin", "h2-lambda-1m1-rank-everywhere",
-                    "--method", "exact", "--size", "3,2")
+    recs = records_by_variant(H2, "h2-theta-reflection", "h2-theta-reflection-twin", "h2-lambda-1m1-rank-everywhere",
+                              "--method", "exact", "--size", "3,2")
     verdicts = {key[0]: rec["verdict"] for key, rec in recs.items()}
     assert verdicts["h2-theta-reflection"] == "proved"
     assert verdicts["h2-theta-reflection-twin"] == "fails"
@@ -193,6 +181,6 @@ def test_hidden_section6_notes_replay():
 
 @pytest.mark.parametrize("method", ["free", "exact", "modular", "float"])
 def test_false_claims_through_the_free_reciprocal_never_pass(method):
-    recs = _records(S84 / "own" / "reciprocal_tricks.py", "--method", method)
+    recs = records_by_variant(S84 / "own" / "reciprocal_tricks.py", "--method", method)
     want = "undecided" if method == "free" else "fails"
     assert {rec["verdict"] for rec in recs.values()} == {want}, [(k, r["message"][:80]) for k, r in recs.items()]

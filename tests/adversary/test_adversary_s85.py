@@ -29,43 +29,22 @@
 from __future__ import annotations
 
 import json
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from adversary_replay import records_by_variant, requires_namespaces, verdicts_by_claim, verify_json
+
 S85 = Path(__file__).parent / "s85"
 
-
-def _namespaces() -> bool:
-    from stiefelsym.run.sandbox import namespaces_available
-    return namespaces_available()
-
-
-NAMESPACES = pytest.mark.skipif(not _namespaces(), reason="no user + pid + mount namespaces here: the jobs are "
-                                "ordinary children of the tracing process (the records say so)")
-
-
-def _run(path: Path, *args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                           "--format", "json", *args], capture_output=True, text=True, timeout=600)
-
-
-def _records(path: Path, *args: str) -> dict:
-    out = _run(path, *args)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("variant"), r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
-
-
-def _verdicts(path: Path, *args: str) -> dict:
-    return {key[0]: rec["verdict"] for key, rec in _records(path, *args).items()}
+NAMESPACES = requires_namespaces()
 
 
 @NAMESPACES
 @pytest.mark.parametrize("method", ["exact", "modular"])
 def test_every_job_is_process_1_alone_in_its_namespace(method):
-    assert set(_verdicts(S85 / "own" / "job_alone.py", "--size", "3,1", "--method", method).values()) \
+    assert set(verdicts_by_claim(S85 / "own" / "job_alone.py", "--size", "3,1", "--method", method).values()) \
         == {"proved" if method == "exact" else "checked"}
 
 
@@ -74,7 +53,7 @@ def test_every_job_is_process_1_alone_in_its_namespace(method):
                                                  ("c4_status_switches.py", "sw-first", "sw-second")])
 def test_one_function_under_two_ids_gets_one_verdict(name, first, second):
     for method in ("exact", "modular", "free"):
-        v = _verdicts(S85 / "h1" / name, "--size", "3,1", "--method", method)
+        v = verdicts_by_claim(S85 / "h1" / name, "--size", "3,1", "--method", method)
         assert v[first] == v[second], (method, v)
         assert v[first] in ("fails", "undecided"), (method, v)      # XXᵀ − I_n: false at r < n
 
@@ -82,18 +61,18 @@ def test_one_function_under_two_ids_gets_one_verdict(name, first, second):
 @NAMESPACES
 def test_system_v_objects_do_not_count_the_jobs():
     for method in ("exact", "modular"):
-        v = _verdicts(S85 / "own" / "sysv_count.py", "--size", "3,1", "--method", method)
+        v = verdicts_by_claim(S85 / "own" / "sysv_count.py", "--size", "3,1", "--method", method)
         assert v == {"shm-first": "fails", "shm-second": "fails"}, (method, v)
 
 
 def test_a_patched_fraction_class_is_refused():
-    out = _run(S85 / "h1" / "c7_fraction_patch.py", "--size", "3,2", "--method", "exact")
+    out = verify_json(S85 / "h1" / "c7_fraction_patch.py", "--size", "3,2", "--method", "exact")
     assert out.returncode == 2, out.stdout[-500:]
     assert "the engine was changed by claim code" in out.stderr
 
 
 def test_json_replaced_while_a_claim_is_traced_is_seen():
-    recs = _records(S85 / "own" / "json_patch_in_trace.py", "--size", "3,2", "--method", "exact")
+    recs = records_by_variant(S85 / "own" / "json_patch_in_trace.py", "--size", "3,2", "--method", "exact")
     (rec,) = recs.values()
     assert rec["verdict"] == "error" and "EngineChanged" in rec["message"], rec["message"]
 
@@ -101,7 +80,7 @@ def test_json_replaced_while_a_claim_is_traced_is_seen():
 @pytest.mark.skipif(sys.version_info < (3, 11), reason="-I cannot be written -s -P before Python 3.11: the "
                     "interpreter's hash seed stays random there")
 def test_the_hash_seed_is_the_same_in_every_run():
-    runs = [_records(S85 / "h1" / "c4_hashseed.py", "--size", "3,1", "--method", "exact") for _ in range(3)]
+    runs = [records_by_variant(S85 / "h1" / "c4_hashseed.py", "--size", "3,1", "--method", "exact") for _ in range(3)]
     assert len({json.dumps([(k[0], rec["verdict"], rec.get("digest")) for k, rec in sorted(r.items())])
                 for r in runs}) == 1
 
@@ -109,16 +88,16 @@ def test_the_hash_seed_is_the_same_in_every_run():
 def test_sizes_outside_their_own_statement_are_refused():
     """h1 M2: a statement of sizes rebuilt with dataclasses.replace (or a subclass, or a field set on the frozen
     object) kept listed sizes that its fields exclude, and the default run verified the claim there."""
-    out = _run(S85 / "h1" / "f8_lying_specs.py", "--method", "exact")
+    out = verify_json(S85 / "h1" / "f8_lying_specs.py", "--method", "exact")
     assert out.returncode == 2 and "which its own statement of sizes (r = n) excludes" in out.stderr, out.stderr[-800:]
 
 
 def test_multipliers_at_a_point_of_the_claims_own_under_free():
-    v = _verdicts(S85 / "h2" / "h2_probe_atpoint.py", "--method", "free")
+    v = verdicts_by_claim(S85 / "h2" / "h2_probe_atpoint.py", "--method", "free")
     assert v == {"p2-atpoint-multipliers": "proved", "p2-atpoint-multipliers-twin": "undecided",
                  "p2-own-multipliers": "proved"}, v
     for method in ("exact", "modular"):
-        recs = _records(S85 / "h2" / "h2_probe_atpoint.py", "--method", method, "--size", "3,2")
+        recs = records_by_variant(S85 / "h2" / "h2_probe_atpoint.py", "--method", method, "--size", "3,2")
         assert {k[0]: r["verdict"] for k, r in recs.items()} == {
             "p2-atpoint-multipliers": "proved" if method == "exact" else "checked",
             "p2-atpoint-multipliers-twin": "fails",
@@ -129,18 +108,18 @@ def test_multipliers_at_a_point_of_the_claims_own_under_free():
 @pytest.mark.parametrize("name", ["c4_frames_frames.py", "c4_frames_status.py", "c4_capture_size.py"])
 def test_a_job_finds_nothing_of_the_jobs_before_it(name):
     for method in ("exact", "modular"):
-        v = _verdicts(S85 / "h4" / name, "--size", "3,1", "--method", method)
+        v = verdicts_by_claim(S85 / "h4" / name, "--size", "3,1", "--method", method)
         assert len(set(v.values())) == 1 and set(v.values()) <= {"fails"}, (name, method, v)
 
 
 def test_a_size_finds_nothing_of_the_sizes_before_it():
     for sizes in (["--size", "4,1", "--size", "4,2"], ["--size", "4,2"]):
-        recs = _records(S85 / "h4" / "c4_sizes_frames.py", "--method", "exact", *sizes)
+        recs = records_by_variant(S85 / "h4" / "c4_sizes_frames.py", "--method", "exact", *sizes)
         assert {rec["verdict"] for rec in recs.values()} == {"fails"}, (sizes, recs)
 
 
 def test_a_method_set_on_jsons_encoder_is_seen():
-    (rec,) = _records(S85 / "h4" / "c7_json_instance.py", "--size", "3,1", "--method", "exact").values()
+    (rec,) = records_by_variant(S85 / "h4" / "c7_json_instance.py", "--size", "3,1", "--method", "exact").values()
     assert rec["verdict"] == "error" and "EngineChanged" in rec["message"], rec["message"]
 
 
@@ -148,9 +127,10 @@ def test_multipliers_at_another_point_are_not_those_of_the_scene():
     """The stop's own attempt on that change: the multipliers at (X, −P) taken for those at (X, P) (a Hamiltonian
     with a term linear in P), or with a sign slip, are never proved; their true controls are."""
     path = S85 / "own" / "point_multipliers_false.py"
-    assert _verdicts(path, "--method", "free") == {"pm-lambda-same-f": "undecided", "pm-lambda-shift-f": "undecided",
-                                                   "pm-pi-zero-t": "proved", "pm-lambda-t": "proved"}
+    assert verdicts_by_claim(path, "--method", "free") == {"pm-lambda-same-f": "undecided",
+                                                           "pm-lambda-shift-f": "undecided",
+                                                           "pm-pi-zero-t": "proved", "pm-lambda-t": "proved"}
     for method in ("exact", "modular", "float"):
-        v = _verdicts(path, "--method", method, "--size", "3,2")
+        v = verdicts_by_claim(path, "--method", method, "--size", "3,2")
         assert v["pm-lambda-same-f"] == v["pm-lambda-shift-f"] == "fails", (method, v)
         assert v["pm-pi-zero-t"] == v["pm-lambda-t"] != "fails", (method, v)

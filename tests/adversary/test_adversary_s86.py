@@ -26,27 +26,11 @@ from pathlib import Path
 
 import pytest
 
+from adversary_replay import requires_namespaces, verdicts_by_size, verify_json
+
 S86 = Path(__file__).parent / "s86"
 
-
-def _namespaces() -> bool:
-    from stiefelsym.run.sandbox import namespaces_available
-    return namespaces_available()
-
-
-NAMESPACES = pytest.mark.skipif(not _namespaces(), reason="no user + pid + mount namespaces here: the jobs are "
-                                "ordinary children of the tracing process (the records say so)")
-
-
-def _run(path: Path, *args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                           "--format", "json", *args], capture_output=True, text=True, timeout=600)
-
-
-def _records(path: Path, *args: str) -> dict:
-    out = _run(path, *args)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("n"), r.get("r")): r["verdict"] for r in json.loads(out.stdout)["results"]}
+NAMESPACES = requires_namespaces()
 
 
 @NAMESPACES
@@ -54,7 +38,7 @@ def _records(path: Path, *args: str) -> dict:
                                                  ("c4_ofd_lock.py", "ol-first", "ol-second")])
 def test_one_function_under_two_ids_gets_one_verdict(name, first, second):
     for method in ("exact", "modular", "free"):
-        v = _records(S86 / "h1" / name, "--size", "3,1", "--method", method)
+        v = verdicts_by_size(S86 / "h1" / name, "--size", "3,1", "--method", method)
         by_id = {key[0]: verdict for key, verdict in v.items()}
         assert by_id[first] == by_id[second], (method, v)
         assert by_id[first] in ("fails", "undecided"), (method, v)      # XXᵀ − I_n: false at r < n
@@ -63,13 +47,13 @@ def test_one_function_under_two_ids_gets_one_verdict(name, first, second):
 @NAMESPACES
 def test_a_size_of_the_second_phase_sees_no_other_size():
     path = S86 / "h1" / "c4_netns_sizes.py"
-    both = _records(path, "--size", "4,1", "--size", "4,2", "--method", "modular")
-    alone = _records(path, "--size", "4,2", "--method", "modular")
+    both = verdicts_by_size(path, "--size", "4,1", "--size", "4,2", "--method", "modular")
+    alone = verdicts_by_size(path, "--size", "4,2", "--method", "modular")
     assert both[("ns-size", 4, 2)] == alone[("ns-size", 4, 2)] == "fails", (both, alone)
 
 
 def test_control_characters_of_a_files_prints_are_escaped():
-    out = _run(S86 / "h1" / "m_escape.py", "--size", "3,1", "--method", "exact")
+    out = verify_json(S86 / "h1" / "m_escape.py", "--size", "3,1", "--method", "exact")
     assert "\x1b" not in out.stderr and "\\x1b[1A" in out.stderr, out.stderr[-2000:]
     assert [r["verdict"] for r in json.loads(out.stdout)["results"]] == ["fails"]
 
@@ -77,8 +61,8 @@ def test_control_characters_of_a_files_prints_are_escaped():
 def test_a_block_over_r_and_n_minus_r_is_never_rn_and_says_why():
     """h1 F1: X0 = (I_r; 0) typed R^r + R^(n-r) times X is refused (the types differ: splitting R^n is a choice of
     coordinates, the route of class 1); the message names the spaces, not an internal tag."""
-    recs = json.loads(_run(S86 / "h1" / "pub_tricks2.py", "pb-x0block-f", "--size", "3,1",
-                           "--method", "exact").stdout)["results"]
+    recs = json.loads(verify_json(S86 / "h1" / "pub_tricks2.py", "pb-x0block-f", "--size", "3,1",
+                                  "--method", "exact").stdout)["results"]
     assert [r["verdict"] for r in recs] == ["error"]
     assert "the sum R^r + R^(n-r) (never R^n" in recs[0]["message"], recs[0]["message"]
 
