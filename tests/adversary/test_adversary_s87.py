@@ -13,12 +13,12 @@ are replayed under the exact, modular and free methods.  Its minor findings, clo
 """
 from __future__ import annotations
 
-import json
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from adversary_replay import records
 
 H1 = Path(__file__).parent / "s87" / "h1"
 
@@ -27,32 +27,21 @@ FALSE_AT_3_2 = ("s87h1k-gram-psi-square", "s87h1k-xptx-zero", "s87h1k-xxt-identi
                 "s87h1k-phi-conserved-neumann")
 
 
-def _run(path: Path, *args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "stiefelsym", "verify", "--claims", str(path), "--jobs", "1",
-                           "--format", "json", *args], capture_output=True, text=True, timeout=600)
-
-
-def _records(path: Path, *args: str) -> dict:
-    out = _run(path, *args)
-    assert out.stdout.strip(), out.stderr[-2000:]
-    return {(r["claim"], r.get("n"), r.get("r")): r for r in json.loads(out.stdout)["results"]}
-
-
 @pytest.mark.parametrize("method", ["exact", "modular"])
 def test_statements_true_on_part_of_the_constraint_set_fail(method):
-    recs = _records(H1 / "tricks.py", *FALSE_AT_3_2, "s87h1k-not-constraint", "--size", "3,2", "--method", method)
+    recs = records(H1 / "tricks.py", *FALSE_AT_3_2, "s87h1k-not-constraint", "--size", "3,2", "--method", method)
     verdicts = {key[0]: r["verdict"] for key, r in recs.items()}
     assert verdicts == {**{c: "fails" for c in FALSE_AT_3_2}, "s87h1k-not-constraint": "fails"}, verdicts
 
 
 def test_the_free_method_proves_none_of_them():
-    recs = _records(H1 / "tricks.py", *FALSE_AT_3_2, "s87h1k-not-constraint", "--method", "free")
+    recs = records(H1 / "tricks.py", *FALSE_AT_3_2, "s87h1k-not-constraint", "--method", "free")
     assert {r["verdict"] for r in recs.values()} == {"undecided"}, recs
 
 
 @pytest.mark.parametrize("method", ["exact", "modular"])
 def test_det_x_on_one_component_of_o_n(method):
-    recs = _records(H1 / "tricks4.py", "s87h1k-det-plus", "s87h1k-det-minus", "s87h1k-det-square", "--size", "2,2",
+    recs = records(H1 / "tricks4.py", "s87h1k-det-plus", "s87h1k-det-minus", "s87h1k-det-square", "--size", "2,2",
                     "--method", method)
     verdicts = {key[0]: r["verdict"] for key, r in recs.items()}
     assert verdicts["s87h1k-det-plus"] == verdicts["s87h1k-det-minus"] == "fails", verdicts
@@ -62,7 +51,7 @@ def test_det_x_on_one_component_of_o_n(method):
 def test_a_claim_of_several_nonvanishing_residuals_says_one_is_enough():
     """h1 M1: {XᵀX − Iᵣ, Ψ} stated not to vanish is proved by Ψ alone (the rule of a does-not-vanish claim); the
     words say so, so that a reader does not take it for "each is nonzero"."""
-    recs = _records(H1 / "tricks3.py", "s87h1k-not-mixed", "--size", "3,2", "--method", "exact")
+    recs = records(H1 / "tricks3.py", "s87h1k-not-mixed", "--size", "3,2", "--method", "exact")
     assert [r["verdict"] for r in recs.values()] == ["proved"], recs
     out = subprocess.run([sys.executable, "-m", "stiefelsym", "show", "s87h1k-not-mixed", "--claims",
                           str(H1 / "tricks3.py")], capture_output=True, text=True, timeout=300)
@@ -84,6 +73,6 @@ def det_of_x(s):
 
 def test_det_of_a_matrix_between_two_spaces_is_refused_in_words_that_name_det(tmp_path):
     (tmp_path / "detx.py").write_text(DET_OF_X, encoding="utf-8")
-    recs = _records(tmp_path / "detx.py", "--size", "2,2", "--method", "exact")
+    recs = records(tmp_path / "detx.py", "--size", "2,2", "--method", "exact")
     (rec,) = recs.values()
     assert rec["verdict"] == "error" and "for det and elementary" in rec["message"], rec["message"]
