@@ -1158,9 +1158,9 @@ def _show_traced(c: Any, size: Any, full: bool = False) -> None:
         where, traced = run_isolated(trace, SHOW_SECONDS, lambda exc: f"{type(exc).__name__}: {exc}")
     except HardTimeout:
         click.echo(f"traced:      (the trace did not end within {SHOW_SECONDS:.0f} s at this size)" if not full else
-                   f"traced:      (the trace and its text did not end within {SHOW_SECONDS:.0f} s: written whole, a "
-                   "graph that reads its nodes many times has a text of exponential length; without --full it is cut "
-                   "to a reader's length)")
+                   f"traced:      (the trace and its text did not end within {SHOW_SECONDS:.0f} s: written whole, the "
+                   "text of a large graph is long, and that of a graph that reads its nodes many times grows "
+                   "exponentially; without --full it is cut to a reader's length)")
         return
     except (ChildDied, ChildError) as exc:
         click.echo(f"traced:      (the trace ended without a graph: {_one_line(str(exc))})")
