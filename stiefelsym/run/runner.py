@@ -330,7 +330,6 @@ def traced_text(claim: Claim, size: Size | None, func: Callable | None = None,
     by its shape, a graph of more than :data:`TRACED_NODES` nodes by its size.  ``full``: nothing is cut
     (every term, block and node read back; ``stiefelsym show --full``), never cached, never a record's."""
     from stiefelsym.ir import _compiled_graph as compile_claim
-    from stiefelsym.ir.notation import NOT_READ_BACK, traced_outputs
     from stiefelsym.methods.families import size_families, stated_on
     from stiefelsym.scene import REALIZATIONS
     cons = REALIZATIONS[claim.realization]
@@ -353,25 +352,27 @@ def traced_text(claim: Claim, size: Size | None, func: Callable | None = None,
     except BaseException:   # noqa: BLE001 - the run's verdict says why the claim does not trace
         return []
     out: list[list[str]] = []
-    if full:
-        from stiefelsym.ir.notation import FULL_CAP
-        for fam, g in graphs:
-            out += [[f"{name} ({fam})" if fam else name, uni, tex] for name, uni, tex in traced_outputs(g, FULL_CAP)]
-        return out
     for fam, g in graphs:
-        key = g.digest()
-        text = _TRACED.get(key)
-        if text is None and len(g.ops) > TRACED_NODES:
-            # reading a graph back costs about 70 µs a node: one of tens of thousands (entries read one by one at
-            # a large size) is named by its size only; the smallest size's graph is the one a report prints
-            words = f"{NOT_READ_BACK} {len(g.ops):,} nodes, not read back)"
-            text = _TRACED[key] = [["", words, r"\text{" + words.replace(",", "{,}") + "}"]]
-        if text is None:
-            text = _TRACED[key] = [list(t) for t in traced_outputs(g)]
-            while len(_TRACED) > CHANGES_CACHE_SIZE:
-                del _TRACED[next(iter(_TRACED))]
+        text = [list(t) for t in notation.traced_outputs(g, notation.FULL_CAP)] if full else _record_text(g)
         out += [[f"{name} ({fam})" if fam else name, uni, tex] for name, uni, tex in text]
     return copy.deepcopy(out)
+
+
+def _record_text(g: Any) -> list[list[str]]:
+    """A record's text of the graph g (:func:`traced_text`): cut to a reader's length, cached by digest (the
+    caller copies it)."""
+    key = g.digest()
+    text = _TRACED.get(key)
+    if text is None and len(g.ops) > TRACED_NODES:
+        # reading a graph back costs about 70 µs a node: one of tens of thousands (entries read one by one at
+        # a large size) is named by its size only; the smallest size's graph is the one a report prints
+        words = f"{notation.NOT_READ_BACK} {len(g.ops):,} nodes, not read back)"
+        text = _TRACED[key] = [["", words, r"\text{" + words.replace(",", "{,}") + "}"]]
+    if text is None:
+        text = _TRACED[key] = [list(t) for t in notation.traced_outputs(g)]
+        while len(_TRACED) > CHANGES_CACHE_SIZE:
+            del _TRACED[next(iter(_TRACED))]
+    return text
 
 
 #: the outputs of a graph in the paper's notation (:func:`traced_text`), keyed by its digest
