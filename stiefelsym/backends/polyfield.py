@@ -1722,7 +1722,9 @@ def _content(a: np.ndarray):
         try:
             quotients.append((i, x / g))
         except DomainError:
-            g = g.gcd(x)
+            # the factors of g (at most the size of the smallest entry) that x has: exact divisions (a gcd of
+            # a small g with a large x can take seconds in flint, a division by a factor takes its size)
+            g = _common_part(g, x, DomainError)
             if g.is_constant():
                 return None
             # the smaller g: the quotients so far again (exact: g divides what the larger one divided)
@@ -1732,6 +1734,20 @@ def _content(a: np.ndarray):
     for i, q in quotients:
         out[i] = q
     return g, out.reshape(a.shape)
+
+
+def _common_part(g, x, DomainError):
+    """The largest divisor of g that divides x, from the irreducible factors of g."""
+    out = g.context().constant(1)
+    for f, e in g.factor()[1]:
+        rest = x
+        for _ in range(e):
+            try:
+                rest = rest / f
+            except DomainError:
+                break
+            out = out * f
+    return out
 
 
 def _dot_content(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
