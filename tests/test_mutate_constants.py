@@ -48,7 +48,7 @@ def test_a_constant_run_is_evaluated_once_for_both_point_methods(constant_claim,
     scenes.clear()
     got = cells(run_mutation([constant_claim], **CONSTANT))
     assert got == fresh
-    assert {v[1] for v in got.values()} == {"checked", "fails"}
+    assert {v[1] for v in got.values()} == {"proved", "fails"}
     # the claim as printed and three mutants: one evaluation each, not one per method
     assert afresh == 8 and len(scenes) == 4
 

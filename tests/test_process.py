@@ -277,7 +277,7 @@ def test_corrections_run_at_every_planned_size_after_the_plan():
     sizes = [(s.n, s.r) for s in c.sizes]
     assert [(r.n, r.r) for r in fixes] == sizes * 2
     assert [r.variant for r in fixes] == ["counted right"] * 6 + ["wrong at n = 3"] * 6
-    assert all(r.verdict == "checked" and r.expected for r in fixes[:6])
+    assert all(r.verdict == "proved" and r.expected for r in fixes[:6])     # constants: exact over Q
     wrong = {(r.n, r.r): r for r in fixes[6:]}
     assert all(wrong[s].verdict == "fails" and not wrong[s].expected for s in sizes if s[0] == 3)
     assert all(r.verdict == "fails" and r.expected for r in printed if r.n == 2)
@@ -286,7 +286,7 @@ def test_corrections_run_at_every_planned_size_after_the_plan():
 @needs_fork
 def test_no_corrections_when_the_printed_claim_holds_at_the_planned_sizes():
     results = runner.verify([_count_claim()], sizes=[Size(3, 1)], methods=("modular",))
-    assert [(r.variant, r.verdict) for r in results] == [(None, "checked")]
+    assert [(r.variant, r.verdict) for r in results] == [(None, "proved")]
 
 
 # --------------------------------------------------------------------------- verdict policy
@@ -596,7 +596,7 @@ def test_without_fork_the_plan_runs_in_process():
     assert by[("exits", None, 1, "auto")].verdict == "error"
     assert "SystemExit" in by[("exits", None, 1, "auto")].message
     assert by[("ok", None, 1, "modular")].verdict == "checked"
-    assert by[("count", "counted right", 3, "modular")].verdict == "checked"
+    assert by[("count", "counted right", 3, "modular")].verdict == "proved"
     with_fork = runner.verify(claims, methods=("auto", "modular")) if hasattr(os, "fork") else results
     assert [(r.claim, r.variant, r.n, r.r, r.method, r.verdict) for r in results] == \
         [(r.claim, r.variant, r.n, r.r, r.method, r.verdict) for r in with_fork]

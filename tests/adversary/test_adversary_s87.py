@@ -10,6 +10,9 @@ are replayed under the exact, modular and free methods.  Its minor findings, clo
   They now say that one residual shown nonzero proves the claim.
 - M2: det of X itself at r = n was refused with words about "the trace"; they now name det (computed from traces of
   powers).
+- M3 (closed at stop 88): a count of plain integers was `checked` (p = 0) under the rational and modular methods and
+  `proved` under exact.  Checks that no parameter enters are constants, evaluated exactly over Q: `proved` (or
+  `fails`) whichever method drew the point, and the record names no chart among its reductions.
 """
 from __future__ import annotations
 
@@ -76,3 +79,15 @@ def test_det_of_a_matrix_between_two_spaces_is_refused_in_words_that_name_det(tm
     recs = records(tmp_path / "detx.py", "--size", "2,2", "--method", "exact")
     (rec,) = recs.values()
     assert rec["verdict"] == "error" and "for det and elementary" in rec["message"], rec["message"]
+
+
+@pytest.mark.parametrize("method", ["exact", "rational", "modular"])
+def test_a_count_of_integers_is_proved_or_fails_under_every_point_method(method):
+    """h1 M3: the same verdict under the three methods; the twin (dim so(r) for dim Sym(r)) fails with both numbers."""
+    recs = records(H1 / "claims.py", "s87h1-lema1-count", "s87h1-lema1-count-twin", "--size", "4,2", "--method", method)
+    by = {key[0]: r for key, r in recs.items()}
+    assert by["s87h1-lema1-count"]["verdict"] == "proved", by
+    assert by["s87h1-lema1-count-twin"]["verdict"] == "fails" and "10 (claimed: 8)" in (by["s87h1-lema1-count-twin"]["message"] + (by["s87h1-lema1-count-twin"]["certificate"] or ""))
+    if method != "exact":
+        assert by["s87h1-lema1-count"]["false_pass_bound"] is None
+        assert by["s87h1-lema1-count"]["reductions"][0].startswith("none: no parameter")
