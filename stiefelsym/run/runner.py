@@ -514,22 +514,38 @@ def auto_budget_reason(claim: Claim, size: Size) -> str:
             f"n = {size.n} is above this claim's symbolic budget (n <= {claim.exact_max_n})")
 
 
+#: from this n on, ``auto`` takes the dimension-free proof of the graph it evaluates first, where there is one (a
+#: proof for every n, r specialised to the size, cross-checked by the modular method's points there), and runs
+#: the exact method's own charts only where there is none: below it the exact charts stay an independent proof
+#: of each such claim at every size (n <= 4: the catalog's exact runs of the claims the dimension-free method
+#: proves took 27 s of 173 s of runs at n <= 4 and 47 s at n = 5, 6; the specialised proof takes milliseconds)
+FREE_FIRST_N = 5
+
+
 def _run_auto(claim: Claim, size: Size, seed: int, func: Callable | None,
               exact: Callable[..., Result] | None = None, budget: float | None = None) -> Result:
     exact = exact or METHOD_RUNNERS["exact"]
     tried_exact = claim.exact_at(size.n, size.r) or numbers_only(claim, size.n, size.r, func)
+    spent, specialised_tried = 0.0, False
+    if tried_exact and size.n >= FREE_FIRST_N:
+        proof, spent = _specialised(claim, size, seed, func, 0.0, budget)
+        if proof is not None:
+            return proof
+        specialised_tried = True
     if tried_exact:
         res = exact(claim, size.n, size.r, seed, func)
+        res.seconds += spent
         if res.verdict != "inconclusive":
             return res
         reason = res.message
         spent = res.seconds
     else:
-        reason, spent = auto_budget_reason(claim, size), 0.0
-    proof, took = _specialised(claim, size, seed, func, spent, budget)
-    if proof is not None:
-        return proof
-    spent += took
+        reason = auto_budget_reason(claim, size)
+    if not specialised_tried:
+        proof, took = _specialised(claim, size, seed, func, spent, budget)
+        if proof is not None:
+            return proof
+        spent += took
     res = METHOD_RUNNERS["modular"](claim, size.n, size.r, seed, func)
     res.message = "; ".join(m for m in (f"exact: {reason}" if reason else "", res.message) if m)
     res.seconds += spent
