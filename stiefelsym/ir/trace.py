@@ -681,10 +681,22 @@ def _m_const(s, q):
     return _call(s, "const", (q,), SCALAR)
 
 
+def _one_name(t: "Trace", name: str, what: str) -> None:
+    """A claim's name names one parameter: a second parameter of the same name (a scalar and a matrix, two
+    kinds or two shapes of generic matrix) is refused, for the two would print alike in the traced text, the
+    report and a witness (they are two parameters to every method: H_sym − H_skew read "0"; the trial of §2
+    and §5 of stop 88, I1).  The same parameter asked for again is the same node."""
+    had = t._names.setdefault(name, what)
+    if had != what:
+        t.refuse(f"the name {name!r} already names {had} of this claim; {what} needs a name of its own (two "
+                 "parameters of one name would print alike)")
+
+
 def _m_scalar(s, name):
     t = s._t
     if type(name) is not str:
         return t.refuse("a scalar parameter is named by a string")
+    _one_name(t, name, "a scalar parameter")
     return _call(s, "scalar", (name,), SCALAR)
 
 
@@ -786,6 +798,7 @@ def _m_generic(s, name, m, k, kind="general"):
         return t.refuse(problem)
     if name.startswith(INVERSE_ELEMENTS) and not t._elements:
         return t.refuse(f"the names {INVERSE_ELEMENTS}... are the generic elements of an Inverse statement")
+    _one_name(t, name, f"a generic {'' if kind == 'general' else kind + ' '}{m}×{k} matrix")
     # a general matrix keeps the node of three arguments it always had (the same graphs, the same digests)
     return _call(s, "generic", (name, m, k) if kind == "general" else (name, m, k, kind), MAT,
                  (_generic_side(t, m), _generic_side(t, k)))
@@ -809,13 +822,16 @@ def _m_general_params(s, name, m, k, tags):
     if type(name) is not str:
         return t.refuse("a parameter block is named by a string")
     m, k = _size_arg(t, m, "a number of rows"), _size_arg(t, k, "a number of columns")
-    return _call(s, "general_params", (name, m, k, _tags(t, tags, 2)), MAT, (m, k))
+    tags = _tags(t, tags, 2)
+    _one_name(t, name, f"a block of parameters ({m}×{k}, spaces {tags[0]}, {tags[1]})")
+    return _call(s, "general_params", (name, m, k, tags), MAT, (m, k))
 
 
 def _m_sym_operator(s, name="AA"):
     t = s._t
     if type(name) is not str:
         return t.refuse("an operator is named by a string")
+    _one_name(t, name, "an operator")
     return _call(s, "sym_operator", (name,), ANY)
 
 
@@ -1036,6 +1052,8 @@ class Trace:
         self._fresh = 0            # the fresh elements made so far (s.fresh)
         self._open = [0]           # the functions being traced (0: the claim), innermost last
         self._parents: dict[int, frozenset] = {}   # per function, those open when it was traced
+        #: name -> (what it names, in words) of the claim's named parameters: one name, one parameter
+        self._names: dict[str, str] = {}
 
     # -- nodes ----------------------------------------------------------------------------------
     def new(self, op: str, args: tuple, kind: str, shape: tuple = (None, None)) -> Tracer:
