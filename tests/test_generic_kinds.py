@@ -41,8 +41,19 @@ def skew_is_not_symmetric(s):
 
 
 def general_is_not_symmetric(s):
-    """The general matrix of a name and the symmetric one of the same name are two matrices."""
+    """A general matrix and a symmetric one are two matrices (under two names: one name names one parameter)."""
+    return {"G - G_sym": s.generic("G", "n", "n") - s.generic("H", "n", "n", "sym")}
+
+
+def general_and_symmetric_of_one_name(s):
+    """Two parameters of one name (stop 88, h1 I1: they printed alike, G − G read 0): refused when traced."""
     return {"G - G_sym": s.generic("G", "n", "n") - s.generic("G", "n", "n", "sym")}
+
+
+@pytest.mark.parametrize("method", (*POINT_METHODS, "free"))
+def test_two_kinds_of_one_name_are_refused_under_every_method(method):
+    r = run_one(_claim(general_and_symmetric_of_one_name), None if method == "free" else Size(4, 2), method, 0)
+    assert r.verdict == "error" and "needs a name of its own" in r.message, (method, r.verdict, r.message)
 
 
 @pytest.mark.parametrize("method", POINT_METHODS)

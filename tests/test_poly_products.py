@@ -39,14 +39,13 @@ def test_content_takes_out_the_common_factor_and_keeps_the_quotients():
     assert _content(be.from_obj(_array([[x * y + 1, 0]])).a) is None
 
 
-def test_content_drops_a_factor_that_one_entry_lacks():
+def test_content_gives_up_at_an_entry_the_gcd_does_not_divide():
+    """The part of the gcd that such an entry has is not sought (a gcd with a large entry or a factorization of a
+    large gcd can cost more than the product: stop 88 h2 F1): the plain product is taken."""
     f, be, x, y, z = _ring()
     # the two smallest entries share (x + 1)(y + 1); the largest has only x + 1
     M = be.from_obj(_array([[(x + 1) * (y + 1), (x + 1) * (y + 1) * z, (x + 1) * (z ** 3 + y * z + 7)]]))
-    g, q = _content(M.a)
-    assert len(g) == 2 and g.total_degree() == 1
-    for u, v in zip(M.a.flat, q.flat):
-        assert u == v * g
+    assert _content(M.a) is None
 
 
 def test_a_large_product_with_common_factors_is_the_plain_product(monkeypatch):
@@ -58,9 +57,11 @@ def test_a_large_product_with_common_factors_is_the_plain_product(monkeypatch):
     monkeypatch.setattr(polyfield, "CONTENT_TERMS", 1)
     taken = _dot_content(a.a, b.a, be.ring.zero)
     assert all(u == v for u, v in zip(plain.flat, taken.flat))
-    # a product that is not zero stays so: one entry corrupted by a term
-    b.a[0, 0] = b.a[0, 0] + be.ring.one
-    assert any(u != v for u, v in zip(plain.flat, _dot_content(a.a, b.a, be.ring.zero).flat))
+    # a product that is not zero stays so: one entry corrupted by a term (in a new array: the backend's arrays
+    # are never written in place, and the contents of the last operands are kept by their identity)
+    corrupted = b.a.copy()
+    corrupted[0, 0] = corrupted[0, 0] + be.ring.one
+    assert any(u != v for u, v in zip(plain.flat, _dot_content(a.a, corrupted, be.ring.zero).flat))
 
 
 def test_an_operand_over_a_denominator_its_numerators_share_is_cancelled_before_the_product():

@@ -22,6 +22,7 @@ to the new context the next time it is used (by generator names, which never cha
 """
 from __future__ import annotations
 
+from collections import OrderedDict
 from fractions import Fraction
 from typing import Any
 
@@ -1705,10 +1706,27 @@ def _dot(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
 CONTENT_TERMS = 2_000_000
 
 
+#: the contents of the last operands (:func:`_content`), by the operand's id: the array is kept in the entry, so
+#: the id is not reused while the entry lives (an operand met again in another product is not looked at again)
+_CONTENTS: "OrderedDict[int, tuple]" = OrderedDict()
+CONTENTS_KEPT = 8
+
+
 def _content(a: np.ndarray):
     """The greatest common divisor g of the nonzero entries of a and the array of the quotients, or None
-    when g is a constant.  The gcd of the two smallest entries, then an exact division of each other entry by
-    g (its quotient kept), a gcd again only for an entry that g does not divide."""
+    when g is a constant or is not found cheaply: the gcd of the two smallest entries, then an exact division
+    of each other entry by it (its quotient kept); None at the first entry it does not divide."""
+    hit = _CONTENTS.get(id(a))
+    if hit is not None and hit[0] is a:
+        return hit[1]
+    out = _content_of(a)
+    _CONTENTS[id(a)] = (a, out)
+    while len(_CONTENTS) > CONTENTS_KEPT:
+        _CONTENTS.popitem(last=False)
+    return out
+
+
+def _content_of(a: np.ndarray):
     nz = [(i, x) for i, x in enumerate(a.flat) if x]
     if len(nz) < 2:
         return None
@@ -1718,36 +1736,19 @@ def _content(a: np.ndarray):
         return None
     DomainError = _domain_error()
     quotients: list = []
-    for k, (i, x) in enumerate(nz):
+    for i, x in nz:
         try:
             quotients.append((i, x / g))
         except DomainError:
-            # the factors of g (at most the size of the smallest entry) that x has: exact divisions (a gcd of
-            # a small g with a large x can take seconds in flint, a division by a factor takes its size)
-            g = _common_part(g, x, DomainError)
-            if g.is_constant():
-                return None
-            # the smaller g: the quotients so far again (exact: g divides what the larger one divided)
-            quotients = [(j, y / g) for j, y in nz[:k + 1]]
+            # g does not divide every entry: the plain product (finding the part of g that x has takes a gcd
+            # of g with a large x, or a factorization of g, each of which can cost more than the product:
+            # g of 82,944 terms ran out of memory where the plain product took 12 s, stop 88 h2 F1)
+            return None
     out = np.empty(a.size, dtype=object)
     out.fill(nz[0][1] * 0)
     for i, q in quotients:
         out[i] = q
     return g, out.reshape(a.shape)
-
-
-def _common_part(g, x, DomainError):
-    """The largest divisor of g that divides x, from the irreducible factors of g."""
-    out = g.context().constant(1)
-    for f, e in g.factor()[1]:
-        rest = x
-        for _ in range(e):
-            try:
-                rest = rest / f
-            except DomainError:
-                break
-            out = out * f
-    return out
 
 
 def _dot_content(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:

@@ -9,7 +9,7 @@ BIG = SizeSpec((Size(11, 1), Size(12, 1), Size(12, 12)))
 def big_true(s):
     """True: S symmetric, K skew, tr(SK) = 0, tr(S_n) + tr(S_r) - tr(S_n) - tr(S_r) trivial, tr(X^T K X) = 0."""
     S, K = s.generic("S", "n", "n", "sym"), s.generic("K", "n", "n", "skew")
-    Sr, Kr = s.generic("S", "r", "r", "sym"), s.generic("K", "r", "r", "skew")
+    Sr, Kr = s.generic("Sr", "r", "r", "sym"), s.generic("Kr", "r", "r", "skew")      # one name, one parameter
     return {"S - S^T": S - S.T, "K + K^T": K + K.T, "tr(SK)": (S @ K).trace(),
             "tr(XtKX)": (s.X.T @ K @ s.X).trace(), "Sr - Sr^T": Sr - Sr.T, "Kr + Kr^T": Kr + Kr.T,
             "tr(A K)": (s.A @ K).trace()}

@@ -9,7 +9,7 @@ S = admissible(n_max=4)
 def true_traces(s):
     """True: tr(S K) = 0, tr(S A K) + tr(K A S) = 0, (S X)ᵀ = Xᵀ S, tr(K) = 0 for S sym, K skew (on R^n and R^r)."""
     Sn, Kn = s.generic("S", "n", "n", "sym"), s.generic("K", "n", "n", "skew")
-    Sr, Kr = s.generic("S", "r", "r", "sym"), s.generic("K", "r", "r", "skew")
+    Sr, Kr = s.generic("Sr", "r", "r", "sym"), s.generic("Kr", "r", "r", "skew")      # one name, one parameter
     return {"tr(SK)": (Sn @ Kn).trace(),
             "tr(SAK)+tr(KAS)": (Sn @ s.A @ Kn).trace() + (Kn @ s.A @ Sn).trace(),
             "(SX)^T - X^T S": (Sn @ s.X).T - s.X.T @ Sn,

@@ -41,17 +41,16 @@ def test_a_parameter_name_on_r_n_and_on_r_r_names_two_matrices():
     """JC: s.general_params("G", n, n, ("n", "n")) and s.general_params("G", r, r, ("r", "r")) were one matrix at r = n
     (keyed by the name and the numbers of the size), two at r < n.  The equivariant chart moves the first with
     O(n) and the second with O(r): XG₂ = G₁X and XᵀG₁X = G₂ were proved exactly at (3,3), (4,4) (X = X₀ = I), every
-    other method failed them.  Closed (`Scene.general_params`): the spaces are part of the name, as the size is;
-    the true controls pass."""
+    other method failed them.  Closed (`Scene.general_params`): the spaces are part of the name, as the size is.
+    Since stop 88 (h1 I1: two parameters of one name printed alike) one name names one parameter of a claim: every
+    claim of the file draws both and is refused when traced, under every method."""
     got = run_sizes(SHARED, methods=("exact", "modular", "float"), free=False)
-    for c in ("adv-s40-shared-name-commutes", "adv-s40-shared-name-conjugate"):
-        for size in ((3, 3), (4, 4)):
-            assert verdicts(got, c, size) == {"fails"}, (c, size, got)
-    for c, sizes in (("adv-s40-shared-name-true", ((3, 3), (4, 4))),
+    for c, sizes in (("adv-s40-shared-name-commutes", ((3, 3), (4, 4))),
+                     ("adv-s40-shared-name-conjugate", ((3, 3), (4, 4))),
+                     ("adv-s40-shared-name-true", ((3, 3), (4, 4))),
                      ("adv-s40-shared-name-one-space-true", ((3, 2), (3, 3)))):
         for size in sizes:
-            seen = verdicts(got, c, size)
-            assert seen and seen <= set(PASSING), (c, size, got)
+            assert verdicts(got, c, size) == {"error"}, (c, size, got)
 
 
 TOWER = "s40_number_tower.py"

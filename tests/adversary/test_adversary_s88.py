@@ -1,4 +1,4 @@
-"""Stop 88's replays: the trial of hidden statements of §2 and §5 (h1), its tricks kept as tests.
+"""Stop 88's replays: the trials of hidden statements of §2 and §5 (h1) and of §8 (h2), their tricks kept as tests.
 
 h1 wrote 19 true statements with a false twin each (Dirac brackets of functions of X, P, Φ and Ψ, the rank of
 ξ ↦ (ξX, ξP), the Casimir ⟨Φ, Φ⟩ = tr PᵀP + ½⟨Ψ, Ψ⟩, XᵀΦX = Ψ, the κ-difference of the Neumann flows, two
@@ -12,6 +12,15 @@ integrals, ...) and 42 tricks of its own: 3,438 verdicts against its own numpy, 
 - F1 (left): the free method leaves the Jacobi identity of the Dirac bracket undecided (a flow built along a
   tangent); the fixed-size methods decide it.
 - M1 (left): a rank "at every point" that drops at P = 0 (the chart's origin) is left undecided, not refuted.
+
+h2 wrote 15 true statements of §8 with false twins (𝓛*(λ) = N + [−Xᵀ; Pᵀ]R[P, X], its λ-expansion, tr 𝓛*², det 𝓛* at
+r = 1, the tangent vector of Prop. tangency at r = 1, 2, Cauchy–Binet for e₂ᵣ(Φ), 𝓛*ᵀJ + J𝓛* = 0, the resolvent
+difference, ranks of 𝓛* − N and 𝒱, the right SO(r) action, Uhlenbeck's sums), 28 tricks and 19 claims aimed at
+the exact backend's new step that takes common factors out of large products: about 2,900 verdicts, no wrong one.
+Its finding F1, closed here: an operand whose two smallest entries share a large factor g (82,944 terms) that a
+third entry lacks made the step factor g, and flint ran out of memory: a true claim the step's parent commit
+proved was `inconclusive` (M1: a smaller g, 2 times slower).  The step now gives up at the first entry g does not
+divide (the plain product), and remembers the last operands' contents.
 """
 from __future__ import annotations
 
@@ -21,6 +30,7 @@ import pytest
 from adversary_replay import records, verdicts_by_size
 
 H1 = Path(__file__).parent / "s88" / "h1"
+H2 = Path(__file__).parent / "s88" / "h2"
 
 #: the tricks of I1: each draws two parameters of one name
 SAME_NAME = {
@@ -71,3 +81,28 @@ def test_the_free_method_proves_the_identities_and_leaves_the_twins():
                            "--method", "free")
     assert all(v == "proved" for (c, _, _), v in got.items() if not c.endswith("-twin")), got
     assert all(v == "undecided" for (c, _, _), v in got.items() if c.endswith("-twin")), got
+
+
+def test_a_large_gcd_that_one_entry_lacks_leaves_the_plain_product():
+    """h2 F1: a product that is identically 0, rows g·x, g·y, O·z, O·w with g, O coprime products of determinants
+    (82,944 terms each): proved, as before the step (the step took g from the two smallest entries and factored
+    it when O·z was not divisible, and flint ran out of memory)."""
+    got = verdicts_by_size(H2 / "adv_content.py", "s88h2c-cancel3x", "s88h2c-cancel3x-twin", "--size", "4,1",
+                           "--method", "exact", "--seed", "1")
+    assert got == {("s88h2c-cancel3x", 4, 1): "proved", ("s88h2c-cancel3x-twin", 4, 1): "fails"}, got
+
+
+#: h2's statements of §8 that hold at (3,2), and their twins (false there)
+SEC8_AT_3_2 = ("s88h2-factor", "s88h2-lambda-expansion", "s88h2-trace-square", "s88h2-symplectic", "s88h2-resolvent")
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "free"])
+def test_the_hidden_statements_of_section_8_hold_and_their_twins_fail(method):
+    ids = SEC8_AT_3_2 + tuple(c + "-twin" for c in SEC8_AT_3_2)
+    size = () if method == "free" else ("--size", "3,2")
+    got = verdicts_by_size(H2 / "sec8_claims.py", *ids, *size, "--method", method)
+    want_true = {"exact": "proved", "modular": "checked", "free": "proved"}[method]
+    want_twin = "undecided" if method == "free" else "fails"
+    for (c, _, _), v in got.items():
+        assert v == (want_twin if c.endswith("-twin") else want_true), (c, v, got)
+    assert {c for c, _, _ in got} == set(ids), got
