@@ -33,9 +33,10 @@ DEFAULT_TITLE = ("Verification of Fedorov & Jovanović, "
 #: what each verdict means, for a mathematician reading the report
 VERDICT_MEANING = {
     "proved": ("The statement holds identically.  At a size (n, r): exact symbolic "
-               "computation reduced every residual to zero on the constraint set, or, "
-               "beyond the size's symbolic budget, the dimension-free proof of the same "
-               "graph holds there (the record says so); a rank equal to its matrix's full "
+               "computation reduced every residual to zero on the constraint set, or "
+               "the dimension-free proof of the same graph holds there (the record says "
+               "so: auto takes it first from n = 5 on, and beyond the size's symbolic "
+               "budget; at n ≤ 4 the exact computation is an independent proof); a rank equal to its matrix's full "
                "size is proved by a nonzero maximal minor at a point.  "
                "At size “all n, r”: a dimension-free computation with the letters "
                "X, Xᵀ, P, Pᵀ, A, … of a free noncommutative algebra proves it for "
@@ -101,12 +102,14 @@ def kind_words(c: "ClaimResults") -> str:
 METHOD_MEANING = {
     "exact": ("symbolic computation at one size (n, r) in exact arithmetic: the residuals reduced to "
               "zero on the constraint set, or a rank or count computed over the field of the chart's "
-              "parameters; proves or refutes.  Beyond a claim's symbolic budget, a graph the dimension-free "
-              "method proved for every n, r is proved at (n, r) by that proof (the same graph, the "
-              "reduction stated), cross-checked by the modular method's points there."),
+              "parameters; proves or refutes.  A graph the dimension-free method proved for every n, r is "
+              "proved at (n, r) by that proof (the same graph, the reduction stated), cross-checked by the "
+              "modular method's points there: under auto from n = 5 on, and beyond a claim's symbolic budget."),
     "rational": "random exact points over ℚ; passes with the bound p below.",
     "modular": "random exact points over prime fields (primes near 2⁶²); passes with the bound p below.",
-    "auto": "the fastest proof-grade method for the claim at that size.",
+    "auto": ("the fastest proof-grade method for the claim at that size: the exact method within the claim's "
+             "symbolic budget (from n = 5 on, the dimension-free proof of the same graph first, where there is "
+             "one), the modular method beyond it."),
     "float": "floating point at random real points, with a running error bound and precision escalation.",
     "ball": ("rigorous interval (ball) arithmetic at the float method's points: a certified nonzero "
              "residual refutes, otherwise it is evidence."),
