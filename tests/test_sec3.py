@@ -140,4 +140,6 @@ def test_claim_holds_as_printed_at_a_small_size(cid):
     c = load_catalog().get(cid)
     n, r = (2, 1) if cid == "metric-flow" else (3, 2)   # metric-flow: symbolic budget
     assert run_exact(c, n, r, 0).verdict == "proved"
-    assert run_points(c, 3, 2, "modular", 0).verdict == "checked"
+    res = run_points(c, 3, 2, "modular", 0)
+    # checks that no parameter enters (counts of integers) are constants, exact over Q: proved
+    assert res.verdict == ("proved" if res.certificate.startswith("no parameter enters") else "checked"), res.message

@@ -188,7 +188,10 @@ def test_section_7_holds_as_printed_at_small_sizes(catalog, cid):
     for n, r in exact:
         assert run_exact(c, n, r, SEED).verdict == "proved", (cid, n, r)
     for n, r in modular:
-        assert run_points(c, n, r, "modular", SEED).verdict == "checked", (cid, n, r)
+        res = run_points(c, n, r, "modular", SEED)
+        # checks that no parameter enters (counts of integers) are constants, exact over Q: proved
+        want = "proved" if res.certificate.startswith("no parameter enters") else "checked"
+        assert res.verdict == want, (cid, n, r, res.verdict)
 
 
 @pytest.mark.parametrize("cid", FREE_PROVED)
