@@ -157,3 +157,20 @@ def test_a_correction_rebuilt_for_each_run_shares_one_dimension_free_attempt(mon
     other = dataclasses.replace(c, realization="metric")
     run_one(other, Size(4, 2), "exact", 0)
     assert spy.call_count >= 2      # attempted again (the exact chart that follows may fork too)
+
+
+def test_a_metric_proof_reads_the_same_whatever_ran_before_it_in_the_process():
+    """The multipliers Λ of the metric flows are numbered from 1 in each dimension-free run: a specialised proof
+    of metric-flow at (5, 2) read Λ:1 or Λ:2 by the worker it ran in (the numbers went on from run to run), so a
+    catalog run was not reproduced byte for byte (stop 88)."""
+    from stiefelsym.methods.dimension_free import run_free
+    from stiefelsym.run import runner
+    cat = load_catalog()
+    first, _ = runner._specialised(cat.get("metric-flow"), Size(5, 2), 0, None, 0.0, None)
+    for c in [c for c in cat if c.realization == "metric"][:3]:
+        run_free(c)
+    specialise._FREE.clear()
+    again, _ = runner._specialised(cat.get("metric-flow"), Size(5, 2), 0, None, 0.0, None)
+    assert first.verdict == again.verdict == "proved"
+    assert "Lambda:1" in first.certificate and first.certificate == again.certificate
+    assert first.reductions == again.reductions

@@ -43,9 +43,20 @@ from stiefelsym.ir import GraphUnavailable, NotDeterministic, SizeFamily, TraceR
 from stiefelsym.methods.families import size_families
 
 
+def _fresh_multipliers() -> None:
+    """The multipliers Λ of the metric flows are numbered from 1 in each run (Λ:1, Λ:2 in the order the run meets
+    them), so that a record's text is the same whichever process ran it and what that process ran before (the
+    numbers went on from run to run: a specialised proof at (5, 2) read Λ:1 or Λ:2 by the worker it ran in).  A
+    letter of one run never meets another run's: a system with the rule of a Λ has memos of its own, and a name
+    admitted to the shared memos with another meaning empties them (free.scene._LetterBook)."""
+    from stiefelsym.free import metric
+    metric._LAMBDAS[0] = 0
+
+
 def run_free(claim: Claim, func: Callable | None = None) -> Result:
     func = func or claim.func
     t0 = time.perf_counter()
+    _fresh_multipliers()
     if claim.expect == "nonzero":
         res = _base_result(claim, None, None, "free", None)
         res.verdict, res.seconds = "undecided", time.perf_counter() - t0
@@ -89,6 +100,8 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
     (otherwise it is one case of a union, see :func:`run_free_union`)."""
     res = _base_result(claim, None, None, "free", None)
     t0 = time.perf_counter()
+    if alone:
+        _fresh_multipliers()
 
     def undecided(msg: str) -> Result:
         res.verdict = "undecided"
