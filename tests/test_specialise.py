@@ -174,3 +174,18 @@ def test_a_metric_proof_reads_the_same_whatever_ran_before_it_in_the_process():
     assert first.verdict == again.verdict == "proved"
     assert "Lambda:1" in first.certificate and first.certificate == again.certificate
     assert first.reductions == again.reductions
+
+
+def _false_at_five(s):
+    """False at n = 5 only (the claim reads n as a number: its graph at (5, r) is not its graph at other sizes)."""
+    bump = s.q(1) if int(s.n) == 5 else s.q(0)
+    return {"r": s.X.T @ s.X - s.Ir + s.Ir * bump}
+
+
+def test_auto_from_n_5_takes_no_dimension_free_proof_of_another_graph():
+    """auto takes the dimension-free proof first from n = 5 on (runner.FREE_FIRST_N) only for the graph it proves:
+    a claim false at n = 5 alone fails there, and holds at (6, 2)."""
+    c = Claim(id="t88-false-at-5", paper=("t",), kind="id", section="t", func=_false_at_five,
+              sizes=admissible(n_max=6))
+    assert run_one(c, Size(5, 2), "auto", 0).verdict == "fails"
+    assert run_one(c, Size(6, 2), "auto", 0).verdict == "proved"
