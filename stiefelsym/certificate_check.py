@@ -144,14 +144,14 @@ def check_certificate(data: Any) -> CheckReport:
         at = f" (at n = r = {k} only: {' and '.join(ones)} hold together exactly there)"
     if ones:
         bad = [t["coef"] for e in entries for t in e["residual"] + e["terms"]
-               if se.expand(coefficient(t["coef"]).as_numer_denom()[1].subs(where)) == 0]
+               if se.expand(denominator(t["coef"]).subs(where)) == 0]
         if bad:
             return CheckReport(False, f"the coefficient {bad[0]} has a pole where {' and '.join(ones)} "
                                       f"{'hold' if len(ones) > 1 else 'holds'}", seconds=time.perf_counter() - t0)
     # a denominator in the sizes is a pole of the proof at the sizes where it vanishes (1/(n − r) at r = n): the
     # certificate is a proof for all n, r only where no coefficient's denominator can vanish at a size
     for t in (t for e in entries for t in e["residual"] + e["terms"]):
-        if may_vanish_at_a_size(den := coefficient(t["coef"]).as_numer_denom()[1].subs(where if ones else {})):
+        if may_vanish_at_a_size(den := denominator(t["coef"]).subs(where) if ones else denominator(t["coef"])):
             return CheckReport(False, f"the coefficient {t['coef']} has the denominator {den}, which may be 0 at "
                                       "some n, r: no proof for all n, r", seconds=time.perf_counter() - t0)
     if ctx.sylvester:   # (what the multipliers' relations rest on)
@@ -161,11 +161,32 @@ def check_certificate(data: Any) -> CheckReport:
                        len(entries), terms, time.perf_counter() - t0)
 
 
+#: memos of two pure functions (a warm proof meets the same few coefficients again): denominators by their
+#: coefficient's text, and whether a denominator may vanish at a size
+_DENOMINATORS: dict[str, Any] = {}
+_MAY_VANISH: dict[Any, bool] = {}
+
+
+def denominator(text: Any) -> Any:
+    """The denominator of the coefficient written ``text`` (see :func:`coefficient`)."""
+    if not isinstance(text, str) or text not in _DENOMINATORS:
+        _DENOMINATORS.clear() if len(_DENOMINATORS) > 100_000 else None
+        _DENOMINATORS[text] = coefficient(text).as_numer_denom()[1]
+    return _DENOMINATORS[text]
+
+
 def may_vanish_at_a_size(den: Any) -> bool:
     """Whether the polynomial ``den`` (in the sizes n, r and generic parameters) may be identically 0 in the
     parameters at some size n >= r >= 1: False when it has no n, r, or when, written in d = n − r >= 0 and
     e = r − 1 >= 0, one of its coefficients as a polynomial in the parameters is a polynomial in d, e whose
     coefficients have one sign and whose constant term is not 0 (so nonzero at every size); else True."""
+    if den not in _MAY_VANISH:
+        _MAY_VANISH.clear() if len(_MAY_VANISH) > 100_000 else None
+        _MAY_VANISH[den] = _may_vanish_at_a_size(den)
+    return _MAY_VANISH[den]
+
+
+def _may_vanish_at_a_size(den: Any) -> bool:
     n, r, d, e, groups = se.Symbol("n"), se.Symbol("r"), se.Dummy("d"), se.Dummy("e"), {}
     if not ({n, r} & set(se.sympify(den).free_symbols)):
         return False

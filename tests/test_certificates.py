@@ -345,8 +345,8 @@ def test_the_checker_does_not_import_the_rewriting_system():
     # the certificates of cases of a claim stated at a union of one-r families: about 25 lines; what a certificate
     # proves and which record it belongs to: about 45 lines; the joint scope of hypotheses of one r: about 15 lines;
     # the bound on a coefficient's expansion before it is expanded: about 20 lines; no denominator that may vanish
-    # at a size: about 20 lines)
-    assert len(path.read_text(encoding="utf-8").splitlines()) < 725
+    # at a size: about 20 lines; the memos of the denominators and of that test: about 20 lines)
+    assert len(path.read_text(encoding="utf-8").splitlines()) < 745
 
 
 ZERO = "((kappa + 1)**2 - kappa**2 - 2*kappa - 1)"   # the zero polynomial, not written as 0
@@ -464,3 +464,16 @@ def test_a_false_identity_with_the_resolvent_at_0_is_not_proved():
     res = run_one(_claim(ainv_minus_resolvent_at_0, "ainv_minus_R0"), None, "free", 0)
     assert res.verdict not in ("proved", "checked", "numeric"), res.verdict
     assert res.certificate_data is None
+
+
+@pytest.mark.parametrize("den, vanishes", [("n - r", True), ("n - r + 1", False), ("2*n - r", False),
+                                            ("kappa", False), ("(n - 2)*kappa", True), ("(n - 2)*kappa + 1", False), ("n + r", False)])
+def test_a_remembered_denominator_is_judged_as_the_first_time(den, vanishes):
+    """The checker remembers denominators by their coefficient's text and whether each may vanish at a size (pure
+    functions): asked again, in either order, it answers as it did the first time."""
+    from stiefelsym.certificate_check import denominator, may_vanish_at_a_size
+    for _ in range(2):
+        assert may_vanish_at_a_size(denominator(f"1/({den})")) is vanishes
+        assert may_vanish_at_a_size(denominator(f"3/({den})")) is vanishes
+    with pytest.raises(Exception, match="must be a string"):
+        denominator(["1/(n - r)"])

@@ -631,10 +631,10 @@ def probe_divisions(claim: Claim, func: Callable, every_size: bool = False, fami
 def size_pole(data: dict) -> str:
     """The first denominator of a coefficient of the certificate ``data`` that may vanish at some sizes n, r, or
     "" (see :func:`~stiefelsym.certificate_check.may_vanish_at_a_size`)."""
-    from stiefelsym.certificate_check import coefficient, may_vanish_at_a_size
+    from stiefelsym.certificate_check import denominator, may_vanish_at_a_size
     for e in data["entries"]:
         for t in e["residual"] + e["terms"]:
-            den = coefficient(t["coef"]).as_numer_denom()[1]
+            den = denominator(t["coef"])
             if may_vanish_at_a_size(den):
                 return str(den)
     return ""
