@@ -1204,6 +1204,8 @@ class Scene(PaperObjects):
 
     def resolvent(self, mu: Scalar) -> Mat:
         """(mu I_n - A)^{-1}."""
+        if type(mu) is Fraction or type(mu) is int:   # a constant of the claim: an element of the field
+            mu = self.const(mu)
         if type(mu) in LAYERED and _deeper(mu, self._field):
             raise TypeError(DEEPER_NUMBER)
 

@@ -735,6 +735,16 @@ class Mat:
             acc = x if acc is None else acc + x
         return self._field.normalize(acc)
 
+    def _product_cost(self, o: "Mat") -> int:
+        """An estimate of the work of self @ o: the backend's (the term products of two polynomial matrices),
+        else the product of the three sizes."""
+        (m, k), n = self._shape(), o._shape()[1]
+        if type(o) is Mat and self._n is not None and o._n is not None and o._field is self._field:
+            cost = getattr(backend(self._field), "product_cost", None)
+            if cost is not None:
+                return cost(self._n, o._n)
+        return m * k * n
+
     def _trace_product(self, o: "Mat") -> Any:
         """tr(self @ o), with the checks and the joins of spaces of the product and of its trace; a
         backend that offers it (``trace_matmul``) computes the product's diagonal only."""

@@ -498,12 +498,13 @@ def _fractions(ev: "Evaluator", x: Any, y: Any) -> tuple[Any, Any]:
     """The operands of an arithmetic op where one is a Fraction constant: next to a number of the scene
     (not a matrix, which converts constants itself) the constant becomes that scene's own element
     (``scene.const``), since number types such as nmod, fmpq or a symengine symbol do not mix with a
-    Fraction."""
+    Fraction; a whole number (Fraction(2), Fraction(1, 3) * 3) becomes the int it is, as an int constant
+    is passed (every method then takes it alike: s89 h2 F1)."""
     scene = ev.root.bind[0]
-    if type(x) is Fraction and type(y) is not Fraction and not isinstance(y, Mat) and x.denominator != 1:
-        return scene.const(x), y
-    if type(y) is Fraction and type(x) is not Fraction and not isinstance(x, Mat) and y.denominator != 1:
-        return x, scene.const(y)
+    if type(x) is Fraction and type(y) is not Fraction and not isinstance(y, Mat):
+        return (int(x) if x.denominator == 1 else scene.const(x)), y
+    if type(y) is Fraction and type(x) is not Fraction and not isinstance(x, Mat):
+        return x, (int(y) if y.denominator == 1 else scene.const(y))
     return x, y
 
 
@@ -556,6 +557,8 @@ def _program(g: Graph, deps: list, fused: bool = False) -> list:
             # (the factors of cancelled products too: a value that cannot be computed is an error still)
             skip[i] = (s, x) + tuple(j for _, a, b in whole for j in (a, b))
             kernels[i] = _paired_product_kernel(s, x, terms, kind, tree)
+        for i, (s, words, atoms, tree) in _trace_words(g, deps, skip).items():
+            skip[i], kernels[i] = (s,) + atoms, _trace_word_kernel(s, words, tree)
     need = set()
     stack = [g.output.i]
     while stack:
@@ -601,6 +604,108 @@ def _trace_products(g: Graph, deps: list) -> dict[int, tuple[int, int, int]]:
         if type(x) is Ref and type(y) is Ref:
             out[i] = (a[0].i, x.i, y.i)
     return out
+
+
+#: the most words (signed products of nodes) and the longest word a trace is expanded into (:func:`_trace_words`)
+MAX_TRACE_WORDS = 8
+MAX_WORD = 4
+
+
+def _trace_words(g: Graph, deps: list, taken: dict) -> dict[int, tuple[int, tuple, tuple, tuple]]:
+    """{i: (scene, words, atoms, tree)} for top-level nodes i = tr(y) not taken by the other fusions, where y is
+    a sum of products of sums ... (add, sub, neg, matmul) whose nodes only y's own nodes read (not the output,
+    not a traced function's body): by linearity tr(y) is a signed sum of traces of words w = x_1 ... x_k of
+    the other nodes (``atoms``), k <= MAX_WORD, and by cyclicity a word is one of its rotations (so the
+    words of a derivative of tr(M^3), tr(M'MM) + tr(MM'M) + tr(MMM'), are one word taken three times).  Each
+    word's trace is then computed with the cheapest adjacent pair multiplied out (see
+    :func:`_trace_word_kernel`): the nodes of y, the large products of a derivative M' by M among them, are
+    not computed at all.  ``tree``: y's nodes (node, op, operands), in order, then ("tr", y), for their
+    checks on zero matrices (:func:`_typed_on_zeros`)."""
+    ops, args = g.ops, g.args
+    readers = _readers(g)
+    top = g.output.i if g.output is not None else -1
+
+    def inner(j: int) -> bool:
+        return ops[j] in ("add", "sub", "neg", "matmul") and not deps[j] and j != top and readers.get(j) == 1 \
+            and all(type(v) is Ref for v in args[j])
+
+    def words(j: int, nodes: list) -> list | None:
+        """The signed words of node j (a list of (sign, word)), or None beyond the bounds."""
+        if not inner(j):
+            return [(1, (j,))]
+        nodes.append(j)
+        a = [v.i for v in args[j]]
+        if ops[j] == "neg":
+            w = words(a[0], nodes)
+            return None if w is None else [(-c, x) for c, x in w]
+        left, right = words(a[0], nodes), words(a[1], nodes)
+        if left is None or right is None:
+            return None
+        if ops[j] == "matmul":
+            out = [(c * d, x + y) for c, x in left for d, y in right]
+        else:
+            out = left + [(-d if ops[j] == "sub" else d, y) for d, y in right]
+        if len(out) > MAX_TRACE_WORDS or any(len(x) > MAX_WORD for _, x in out):
+            return None
+        return out
+
+    found = {}
+    for i, op in enumerate(ops):
+        if op != "call" or deps[i] or i in taken:
+            continue
+        a = args[i]
+        if a[1] != "tr" or a[3] or len(a[2]) != 1 or type(a[0]) is not Ref or type(a[2][0]) is not Ref:
+            continue
+        y, nodes = a[2][0].i, []
+        w = words(y, nodes) if inner(y) else None
+        if not w:
+            continue
+        merged: dict[tuple, int] = {}
+        for c, x in w:
+            key = min(x[k:] + x[:k] for k in range(len(x)))
+            merged[key] = merged.get(key, 0) + c
+        tree = tuple((k, ops[k], tuple(v.i for v in args[k])) for k in sorted(nodes)) + (("tr", y),)
+        atoms = tuple(sorted({j for _, x in w for j in x}))
+        found[i] = (a[0].i, tuple((c, x) for x, c in merged.items() if c), atoms, tree)
+    return found
+
+
+def _trace_word_kernel(s: int, words: tuple, tree: tuple) -> Callable:
+    """The kernel of a trace expanded into words (see :func:`_trace_words`): y's nodes are checked on zero
+    matrices first (the refusals of an ill-typed sum or product are the unfused ones), then each word's trace
+    is taken: tr(x) for one node, tr(x y) from the product's diagonal, and for three or four nodes the
+    adjacent pair of least product cost (``Mat._product_cost``, the term products of polynomial matrices)
+    multiplied out, once per evaluation, the rest as a trace of a product."""
+    nodes, last = list(tree[:-1]), tree[-1]
+
+    def pair(m: dict, scene: Any, x: int, y: int) -> Any:
+        return _once(m, ("@", x, y), lambda: m[x] @ m[y], scene)
+
+    def cost(m: dict, x: int, y: int) -> float:
+        u, v = m[x], m[y]
+        return u._product_cost(v) if type(u) is Mat and type(v) is Mat else 0
+
+    def word_trace(m: dict, scene: Any, w: tuple) -> Any:
+        if len(w) == 1:
+            return scene.tr(m[w[0]])
+        if len(w) == 2:
+            return scene.tr_product(m[w[0]], m[w[1]])
+        if len(w) == 3:
+            k = min(range(3), key=lambda k: cost(m, w[k], w[(k + 1) % 3]))
+            return scene.tr_product(pair(m, scene, w[k], w[(k + 1) % 3]), m[w[(k + 2) % 3]])
+        k = min(range(2), key=lambda k: cost(m, w[k], w[k + 1]) + cost(m, w[k + 2], w[(k + 3) % 4]))
+        return scene.tr_product(pair(m, scene, w[k], w[k + 1]), pair(m, scene, w[k + 2], w[(k + 3) % 4]))
+
+    def run(m: dict, ev: "Evaluator") -> Any:
+        scene = m[s]
+        _typed_on_zeros(m, scene, nodes, last)
+        acc = None
+        for c, w in words:
+            v = word_trace(m, scene, w)
+            for _ in range(abs(c)):
+                acc = (v if c > 0 else -v) if acc is None else (acc + v if c > 0 else acc - v)
+        return scene.q(0) if acc is None else acc
+    return run
 
 
 def _trace_product_kernel(s: int, x: int, y: int) -> Callable:
