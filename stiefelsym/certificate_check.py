@@ -692,6 +692,11 @@ def _used(data: dict) -> set:
     return {str(t["hyp"]) for e in data["entries"] for t in e["terms"]}
 
 
+def _all_entries(data: dict) -> list:
+    """The entries of a certificate, or of every case of a certificate of cases."""
+    return data.get("entries") or [e for c in data.get("cases", []) for e in c["certificate"]["entries"]]
+
+
 def bound(data: dict, record: dict) -> str:
     """Why a certificate is not the one of the record it sits in ("" when it is): its ``about`` (the claim id
     and the digest of the graph it was derived from, written by the free method) must name the record's."""
@@ -737,6 +742,9 @@ def main(argv: list[str] | None = None) -> int:
                 print("\n".join(f"    {x}" for x in statement(data)))
                 if " only" in rep.message:   # the proof's scope: where its hypotheses of one r hold
                     print(f"  where: {rep.message[rep.message.index('(at '):]}")
+                if not any(coefficient(t["coef"]) != 0 for e in _all_entries(data) for t in e["terms"]):
+                    print("  note: no hypothesis is used (every residual above expands to 0 by itself): what binds these "
+                          "residuals to the claim's graph is their derivation, which `stiefelsym check` repeats")
     return 1 if bad else 0
 
 
