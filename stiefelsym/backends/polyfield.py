@@ -52,7 +52,8 @@ _LIFT_BY_TEXT = 64
 #: at n = 7 (up to about 330 parameters in the catalog's runs at n <= 7): there a product of 5 x 7
 #: matrices in flint's 512 variables took 0.3-1 s where symengine's expansion of the same entries took
 #: 2-7 s (double-neumann-momentum at (7,5): 7.3 s -> 0.5 s of CPU); the context still grows from 16
-#: variables by doubling, so a chart of few parameters never pays for the wide exponent vectors
+#: variables (by 8 up to 64, by doubling beyond: :func:`_wider`), so a chart of few parameters never pays
+#: for the wide exponent vectors
 MAX_VARS = 512
 
 
@@ -117,7 +118,7 @@ class PolyRing:
     """The variables, the flint context, the denominator atoms and the conversions of one field.
 
     ``width``: the number of variables the ring is expected to reach (another evaluation of the same graph
-    reached it): the context starts wide enough for them (16, 32, ... variables, at most MAX_VARS), so
+    reached it): the context starts wide enough for them (16, 24, ..., 64, 128, ... variables: _wider; at most MAX_VARS), so
     that the polynomials computed before the last of them is met are not carried to a wider context one
     by one (at 256 variables and more a polynomial of a few hundred terms takes milliseconds to carry).
     Which variable is which, and every value, are the same at every width."""
