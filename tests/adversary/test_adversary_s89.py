@@ -90,9 +90,13 @@ def test_a_zero_residual_attached_to_a_false_claim_is_rejected_by_report_and_che
     chk = subprocess.run([sys.executable, "-m", "stiefelsym", "check", "--no-rerun", str(path)],
                          capture_output=True, text=True, timeout=600, cwd=ROOT)
     assert chk.returncode == 1, (chk.stdout[-800:], chk.stderr[-800:])
+    # the forged record itself, not only the runs its file lacks (h2 kept the forged record alone)
+    assert any(line.startswith("REJECTED c8-false all n, r free: the certificate is not the one the claim's graph")
+               for line in chk.stdout.splitlines()), chk.stdout[-1500:]
     rep = subprocess.run([sys.executable, "-m", "stiefelsym", "report", "--results", str(path), "--report-dir",
                           str(tmp_path)], capture_output=True, text=True, timeout=600, cwd=ROOT)
-    assert rep.returncode != 0, (rep.stdout[-800:], rep.stderr[-800:])
+    assert rep.returncode != 0 and "c8-false: the certificate is not the one the claim's graph gives" in rep.stderr, \
+        (rep.stdout[-800:], rep.stderr[-800:])
 
 
 def test_the_standalone_checker_says_what_an_empty_residual_proves():
