@@ -58,3 +58,17 @@ def test_fraction_constants_are_taken_by_every_method(func, method):
 def test_their_false_twins_are_refuted(func, method):
     c = Claim(id="fractions-false", paper=("test",), kind="id", section="t", func=func, sizes=admissible(4))
     assert run_one(c, Size(3, 2), method, seed=0).verdict == "fails"
+
+
+def a_huge_whole_fraction_off_by_t(s):
+    """False (P ≠ 0): Fraction(10**400) t − 10**400 t + t = 0; a whole Fraction far beyond float64 is an int too."""
+    t = _t(s)
+    return {"r": Fraction(10**400) * t - 10**400 * t + t}
+
+
+@pytest.mark.parametrize("method", ["exact", "modular", "rational", "float"])
+def test_a_huge_whole_fraction_does_not_hide_a_term(method):
+    c = Claim(id="fractions-huge", paper=("test",), kind="id", section="t", func=a_huge_whole_fraction_off_by_t,
+              sizes=admissible(4))
+    assert run_one(c, Size(3, 2), method, seed=0).verdict == "fails"
+    assert run_one(c, None, "free", seed=0).verdict == "undecided"
