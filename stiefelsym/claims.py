@@ -319,9 +319,14 @@ class Claim:
     slips: tuple[str, ...] = ()
     #: why the equivariance reduction is valid although the claim reads coordinates (stated in reports)
     equivariance: str = ""
-    #: registered by the paper's catalog (whose stated reasons are reviewed with the code); a stated
-    #: equivariance reason of any other claim is printed but not relied on
-    reviewed: bool = False
+
+    @property
+    def reviewed(self) -> bool:
+        """Whether this object was registered by the paper's catalog (whose stated reasons are reviewed with the
+        code), or made from such a claim by the engine (:meth:`corrected`): a stated equivariance reason of any
+        other claim is printed but not relied on.  Not a field: no argument, copy (``dataclasses.replace``) or
+        pickle of a claim gives it; the catalog's loading does, by identity (:func:`_mark_reviewed`)."""
+        return bool(reviewed_functions(self))
 
     def expects_failure(self, n: int | None, r: int | None) -> bool:
         if self.expect == "fails":
@@ -443,7 +448,45 @@ class Claim:
             changes["exact_max_r"] = _widened(self.exact_max_r, corr.exact_max_r)
         if corr.exact_corank:
             changes["exact_corank"] = _widened(self.exact_corank, corr.exact_corank)
-        return dataclasses.replace(self, **changes) if changes else self
+        if not changes:
+            return self
+        out = dataclasses.replace(self, **changes)
+        reviewed = reviewed_functions(self)
+        if any(corr.func is f for f in reviewed):
+            _mark_reviewed(out, reviewed)   # a correction registered with the catalog's claim: reviewed with it
+        return out
+
+
+#: the claims the reviewed catalog registered (and the engine made from them): id(claim) -> (a weak reference to
+#: it, the functions its stated reason of equivariance was reviewed with: its own and those of the corrections
+#: registered with it when the catalog was loaded; a correction added later, by anyone, is not among them)
+_REVIEWED: dict[int, tuple[Any, tuple[Callable, ...]]] = {}
+
+
+def reviewed_functions(claim: Any) -> tuple[Callable, ...]:
+    """The functions a reviewed claim's stated reason of equivariance holds for; () for a claim the catalog did
+    not register (identity, not fields: a claim built, copied or unpickled with the fields of a catalog claim
+    is not reviewed)."""
+    hit = _REVIEWED.get(id(claim))
+    return hit[1] if hit is not None and hit[0]() is claim else ()
+
+
+def _mark_reviewed(claim: Claim, functions: tuple[Callable, ...] | None = None) -> Claim:
+    """Register ``claim`` as reviewed with ``functions`` (default: its own and its corrections' functions now).
+    The catalog's loading calls it, and the engine for a claim it makes from a reviewed one (a correction's
+    statement, a mutant's expectation); tests call it to stand for the catalog."""
+    import weakref
+    funcs = tuple(functions) if functions is not None else (claim.func,) + tuple(c.func for c in claim.corrections)
+    key = id(claim)
+    _REVIEWED[key] = (weakref.ref(claim), funcs)
+    weakref.finalize(claim, _forget_reviewed, key, _REVIEWED[key][0])
+    return claim
+
+
+def _forget_reviewed(key: int, ref: Any) -> None:
+    hit = _REVIEWED.get(key)
+    if hit is not None and hit[0] is ref:
+        del _REVIEWED[key]
 
 
 class Registry:
@@ -614,7 +657,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
                   place=" ".join(place.split()) if isinstance(place, str) else place,
                   slips=tuple(slips) if not isinstance(slips, str) else (slips,),
-                  free_max_r=free_max_r, reviewed=_ACTIVE[-1].reviewed)
+                  free_max_r=free_max_r)
         _ACTIVE[-1].add(c)
         fn.claim = c
         return fn
@@ -640,6 +683,9 @@ def _collect(loader: Callable[[], None], reviewed: bool = False) -> Registry:
             loader()
         finally:
             _ACTIVE.pop()
+    if reviewed:
+        for c in reg:       # with the corrections registered in its module, none added later
+            _mark_reviewed(c)
     return reg
 
 

@@ -82,11 +82,14 @@ def _test_module(config: Any, file_path: Path) -> bool:
     return any(_matches(pattern, file_path) for pattern in config.getini("python_files") or ())
 
 
-def _claims_file(file_path: Path) -> bool:
+def _claims_file(file_path: Path, named: bool = False) -> bool:
     """Whether the plugin reads the file as a claims file: every .py file, as `stiefelsym verify --claims DIR`
-    reads a folder, but its _private modules, pytest's conftest and the catalog's own data (its witness
-    templates)."""
-    if file_path.suffix != ".py" or file_path.name.startswith(("_", "conftest")):
+    reads a folder, but its _private modules, pytest's conftest.py (configuration, which pytest loads itself) and
+    the catalog's own data (its witness templates).  A file ``named`` on pytest's command line is a claims file
+    whatever its name, as `stiefelsym verify --claims _x.py` reads one: otherwise pytest would import it, as it
+    imports every .py file it is given, and its code would run in the process that hands out the verdicts."""
+    if file_path.suffix != ".py" or file_path.name == "conftest.py" or \
+            (file_path.name.startswith("_") and not named):
         return False
     catalog = _catalog_dir()
     return catalog is None or catalog not in file_path.resolve().parents[1:]
@@ -94,7 +97,7 @@ def _claims_file(file_path: Path) -> bool:
 
 def pytest_collect_file(file_path: Path, parent: Any) -> Any:
     config = parent.config
-    if not config.getoption("stiefelsym") or not _claims_file(file_path):
+    if not config.getoption("stiefelsym") or not _claims_file(file_path, parent.session.isinitpath(file_path)):
         return None
     # whether a file declares claims is what loading it says, not how it is written (a claim may be declared
     # through a helper, getattr, exec): one declaring none has no items
@@ -155,7 +158,7 @@ def pytest_make_collect_report(collector: Any) -> Any:
             or not config.getoption("stiefelsym"):
         return None
     path = Path(collector.path)
-    if not _claims_file(path):
+    if not _claims_file(path, collector.session.isinitpath(path)):
         return None
     if _test_module(config, path) and not collector.session.isinitpath(path):
         claims, _ = _load(config, path)

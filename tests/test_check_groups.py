@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 
 from stiefelsym import admissible
-from stiefelsym.claims import Claim
+from stiefelsym.claims import Claim, _mark_reviewed
 from stiefelsym.ir import compile_claim
 from stiefelsym.methods import fixed_size
 from stiefelsym.methods.fixed_size import _check_groups, run_exact
@@ -18,8 +18,8 @@ from stiefelsym.scene import REALIZATIONS
 def _claim(func, cid="t-groups", expect="holds"):
     # as the catalog's (reviewed): a claims file's claim is evaluated at a rational point before any symbolic
     # chart and refuted there, so its groups of checks would not be what is tested here (test_adversary_s73)
-    return Claim(id=cid, paper=("prep",), kind="id", section="t", func=func, sizes=admissible(7), expect=expect,
-                 reviewed=True)
+    return _mark_reviewed(Claim(id=cid, paper=("prep",), kind="id", section="t", func=func, sizes=admissible(7),
+                                expect=expect))
 
 
 def _graph(func, n, r):

@@ -2,7 +2,7 @@
 import pytest
 
 from stiefelsym import Count, Rank, admissible, comm
-from stiefelsym.claims import Claim, Size
+from stiefelsym.claims import Claim, Size, _mark_reviewed
 from stiefelsym.methods.fixed_size import run_exact, run_float, run_points
 from stiefelsym.methods.dimension_free import run_free
 from stiefelsym.run.runner import run_one
@@ -67,8 +67,9 @@ def _upper(r):
 
 def _claim(func, kind="id", cid="test", equivariance=""):
     """A test claim; a stated equivariance reason stands for a reviewed catalog claim's."""
-    return Claim(id=cid, paper=("prep",), kind=kind, section="t", func=func, sizes=admissible(4),
-                 equivariance=equivariance, reviewed=bool(equivariance))
+    c = Claim(id=cid, paper=("prep",), kind=kind, section="t", func=func, sizes=admissible(4),
+              equivariance=equivariance)
+    return _mark_reviewed(c) if equivariance else c
 
 
 GOOD = [projector_evolves, resolvent_identity]

@@ -25,7 +25,7 @@ def rank_of_pr_said_full(s):
 
 def _claim(func):
     return dataclasses.replace(load_catalog().get("constraints-independent"), id="rank-xxt", func=func,
-                               corrections=[], equivariance="", reviewed=False, fails_at=None, erratum="")
+                               corrections=[], equivariance="", fails_at=None, erratum="")
 
 
 def _detail(res):

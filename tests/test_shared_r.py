@@ -6,7 +6,7 @@ import os
 
 import pytest
 
-from stiefelsym.claims import Claim, Size, admissible
+from stiefelsym.claims import Claim, Size, _mark_reviewed, admissible
 from stiefelsym.ir import compile_claim
 from stiefelsym.ir.passes import r_dependence
 from stiefelsym.run import runner
@@ -17,8 +17,8 @@ needs_fork = pytest.mark.skipif(not hasattr(os, "fork"), reason="workers need os
 
 def _claim(cid, func, n_max=3, reviewed=True, **kw) -> Claim:
     """A claim standing for one of the reviewed catalog (the only claims a plan traces in the parent)."""
-    return Claim(id=cid, paper=("t",), kind="id", section="9", func=func, sizes=admissible(n_max=n_max),
-                 reviewed=reviewed, **kw)
+    c = Claim(id=cid, paper=("t",), kind="id", section="9", func=func, sizes=admissible(n_max=n_max), **kw)
+    return _mark_reviewed(c) if reviewed else c
 
 
 def _commutator_symmetric(s):

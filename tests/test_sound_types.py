@@ -13,7 +13,7 @@ from stiefelsym.methods.fixed_size import EXACT_CAYLEY_MAX_N
 import symengine as se
 
 from stiefelsym import Mat, admissible, block
-from stiefelsym.claims import Claim, Size, load_catalog
+from stiefelsym.claims import Claim, Size, _mark_reviewed, load_catalog
 from stiefelsym.backends.fields import RationalField
 from stiefelsym.backends.matrix import NeedsCoordinates
 from stiefelsym.run.runner import run_one
@@ -393,8 +393,8 @@ def eigenvalues_with_a_reason(s):
 
 
 def test_objects_the_equivariant_chart_lacks_send_the_claim_to_the_cayley_chart():
-    c = Claim(id="eig", paper=("cond_XP",), kind="id", section="t", func=eigenvalues_with_a_reason,
-              sizes=admissible(4), equivariance="the trace is invariant", reviewed=True)
+    c = _mark_reviewed(Claim(id="eig", paper=("cond_XP",), kind="id", section="t", func=eigenvalues_with_a_reason,
+                             sizes=admissible(4), equivariance="the trace is invariant"))
     assert run_one(c, Size(3, 2), "exact", 0).verdict == "proved"
 
 

@@ -1668,7 +1668,8 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
     plan = cells(claim, list(sizes), list(methods))
 
     def passes(m: Mutant, s: Size | None, meth: str) -> bool:
-        c = claim if m.expect is None else replace(claim, expect=m.expect, fails_at=None, erratum="")
+        c = claim if m.expect is None else _same_review(replace(claim, expect=m.expect, fails_at=None, erratum=""),
+                                                         claim)
         verdict = run_one(c, s, meth, seed, func=m.func, variant=m.description).verdict
         return verdict == "proved" if meth == "free" else verdict in PASSING
 
@@ -1710,3 +1711,11 @@ def search_corrections(claim: Claim, sizes: Sequence[Size] | None = None,
             if on_candidate is not None:
                 on_candidate(m, ok)
     return found
+
+
+def _same_review(made: Claim, claim: Claim) -> Claim:
+    """``made`` (a copy of ``claim`` with another expectation, made here) reviewed as ``claim`` is: with the same
+    functions, none of them a mutant's."""
+    from stiefelsym.claims import _mark_reviewed, reviewed_functions
+    funcs = reviewed_functions(claim)
+    return _mark_reviewed(made, funcs) if funcs else made

@@ -1158,9 +1158,11 @@ _CHECK_STEPS = frozenset({"stiefelsym.brackets.gradient_check"})
 
 
 def _reviewed_function(claim: Claim, func: Callable) -> bool:
-    """Whether ``func`` is the claim's own function or one of its registered corrections: the
-    functions a catalog claim's stated reason of equivariance was reviewed with."""
-    return func is claim.func or any(func is c.func for c in claim.corrections)
+    """Whether ``func`` is the claim's own function or one of its corrections as the catalog registered them: the
+    functions a catalog claim's stated reason of equivariance was reviewed with (a correction added to the
+    claim later, by anyone, is not one of them; a claim the catalog did not register has none)."""
+    from stiefelsym.claims import reviewed_functions
+    return any(func is f for f in reviewed_functions(claim))
 
 
 #: the statements of a graph that are not residuals: a rank and a count hold or not, they do not vanish
@@ -1664,7 +1666,8 @@ def _plan_state(claim: Claim) -> tuple:
     """What :func:`run_exact` reads of a claim besides its function: its realization (the graph and the
     chart), its expected verdict (a claim said not to vanish is never planned), the review of its reason
     of equivariance and its corrections (the functions the reason holds for)."""
-    return (claim.id, claim.realization, claim.expect, claim.reviewed, claim.equivariance,
+    from stiefelsym.claims import reviewed_functions
+    return (claim.id, claim.realization, claim.expect, reviewed_functions(claim), claim.equivariance,
             tuple(c.func for c in claim.corrections))
 
 

@@ -37,9 +37,10 @@ from stiefelsym.methods.families import size_families
 from stiefelsym.results import Result
 from stiefelsym.scene import REALIZATIONS
 
-#: the dimension-free results in this process: (claim id, id of function) -> (claim, function, what the
-#: run reads of the claim, digest of the graph proved, result, the claim's sizes, the time limit that stopped the
-#: attempt or None); a result is used only while the claim and its graph are unchanged
+#: the dimension-free results in this process: (claim id, id of function, family r = k or None) -> (claim,
+#: function, what the run reads of the claim, the digests of the graphs proved, result, the claim's sizes, the time
+#: limit that stopped the attempt or None, the seconds the attempt took); a result is used only while the claim and
+#: its graph are unchanged, and only by a request whose time limit the attempt kept
 _FREE: "OrderedDict[tuple, tuple]" = OrderedDict()
 FREE_CACHE_SIZE = 64
 #: the longest the dimension-free attempt of a run at a size may take (a quarter of the run's budget if less): a
@@ -84,14 +85,15 @@ def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, sec
     key = (claim.id, id(func), family)
     state = _claim_state(claim, families)
     hit = _FREE.get(key)
-    if hit is not None and hit[1] is func and hit[2] == state and hit[3] == digest \
-            and hit[5] is claim.sizes and (hit[6] is None or seconds <= hit[6]):
+    if hit is not None and hit[1] is func and hit[2] == state and digest in hit[3] \
+            and hit[5] is claim.sizes and (hit[6] is None or seconds <= hit[6]) and hit[7] <= seconds:
         _FREE.move_to_end(key)
         return hit[4]
     from stiefelsym.run.isolate import ChildError, HardTimeout, run_isolated
     stopped: float | None = None
     attempt = (lambda: run_free(claim, func)) if family is None else (lambda: run_free_on(claim, func, family,
                                                                                          alone=False))
+    t0 = time.perf_counter()
     try:
         res = run_isolated(attempt, seconds, fixed_size._describe)
     except (HardTimeout, ChildError) as exc:     # ChildDied included: no proof here, the run goes on
@@ -99,10 +101,59 @@ def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, sec
         res.verdict = "undecided"
         res.message = f"the dimension-free attempt ended without a verdict: {str(exc) or f'stopped after {seconds:.1f} s'}"
         stopped = seconds if isinstance(exc, HardTimeout) else None
-    _FREE[key] = (claim, func, state, digest, res, claim.sizes, stopped)
+    took = 0.0 if stopped is not None else min(time.perf_counter() - t0, seconds)
+    digests = (digest,) if family is not None else _proved_digests(claim, func, digest)
+    _keep(key, (claim, func, state, digests, res, claim.sizes, stopped, took))
+    return res
+
+
+def _keep(key: tuple, entry: tuple) -> None:
+    _FREE[key] = entry
+    _FREE.move_to_end(key)
     while len(_FREE) > FREE_CACHE_SIZE:
         _FREE.popitem(last=False)
-    return res
+
+
+def _proved_digests(claim: Claim, func: Callable, digest: str | None = None) -> tuple[str, ...]:
+    """The digests of the graphs :func:`run_free` proves for the claim's function, each the graph the
+    dimension-free run traces on one of the claim's families of sizes (with ``digest``, one the caller
+    computed); an empty tuple where they cannot be read (a claim that does not trace there: no proof to
+    keep)."""
+    out = [] if digest is None else [digest]
+    try:
+        families, why = size_families(claim)
+        cons = REALIZATIONS[claim.realization]
+        if not why:
+            for f in families:
+                d = compile_claim(func, None, None, (cons.name, cons.build), family=f).digest()
+                if d not in out:
+                    out.append(d)
+    except Exception:   # noqa: BLE001 - no graph on a family: only the digest given is kept
+        pass
+    return tuple(out)
+
+
+def remember(claim: Claim, func: Callable | None, res: Result) -> None:
+    """Keep the result of the dimension-free run of a claim's function that a plan made in this process (its
+    run with no size, :func:`run_free`), as the attempt of :func:`_free_result` would have made it: the same
+    computation, so a run at a size of the same claim in this process (auto from n = 5 on, exact beyond the
+    symbolic budget) takes it instead of forking the attempt again.  A copy is kept (the caller's record is
+    finished in place), with the seconds it took: a request with a shorter time limit makes its own attempt."""
+    if fixed_size._MUTATION_ANALYSIS or fixed_size._LOAN is not None or claim.expect != "holds" \
+            or claim.realization not in REALIZATIONS:
+        return
+    import pickle
+    func = func or claim.func
+    try:
+        stated = size_families(claim)
+    except Exception:   # noqa: BLE001 - a statement of sizes that cannot be read: nothing to keep
+        return
+    digests = _proved_digests(claim, func)
+    if not digests:
+        return
+    state = _claim_state(claim, (tuple(stated[0]), stated[1]))
+    copy = pickle.loads(pickle.dumps(res, protocol=pickle.HIGHEST_PROTOCOL))
+    _keep((claim.id, id(func), None), (claim, func, state, digests, copy, claim.sizes, None, res.seconds))
 
 
 def per_r_family(claim: Claim, n: int, r: int) -> SizeFamily | None:

@@ -315,6 +315,8 @@ class _Worker:
     def __init__(self, pid: int, task_fd: int, result_fd: int) -> None:
         self.pid, self.task_fd, self.result_fd = pid, task_fd, result_fd
         self.job: int | None = None
+        #: the affinity key of the last task it was given (see :meth:`WorkerPool.run`)
+        self.key: Any = None
         self.started = 0.0
         self.deadline = 0.0
         self.buffer = bytearray()
@@ -446,10 +448,18 @@ class WorkerPool:
 
     # -- jobs
 
-    def run(self, tasks: Sequence[Any] | Iterator[Any]) -> Iterator[tuple[int, Outcome]]:
+    def run(self, tasks: Sequence[Any] | Iterator[Any],
+            affinity: Callable[[Any], Any] | None = None) -> Iterator[tuple[int, Outcome]]:
         """Outcomes of the tasks, in the order of ``tasks`` (computed up to ``workers`` at once).  An
         iterator of tasks is drawn from only when a worker is free for its next task (what makes a task,
-        such as the plan's look at which runs are one computation, is done while the workers compute)."""
+        such as the plan's look at which runs are one computation, is done while the workers compute).
+
+        ``affinity`` (a key of a task, such as the claim it runs): a free worker takes the next task of the key
+        of its last task, else the next task of a key no other worker has, drawing ahead for one (the tasks
+        passed over wait for their worker); only when there is none does it take another worker's next task.
+        So the tasks of one key run in one worker, in order, while there is other work, and what a worker
+        computed for one task serves the next of its key.  The outcomes come in the order of ``tasks``
+        whatever the workers did."""
         if not self.forking:
             for i, task in enumerate(tasks):
                 t0 = time.perf_counter()
@@ -493,7 +503,7 @@ class WorkerPool:
                         break
                     if idle is None:
                         idle = self._spawn()
-                    i = pending.popleft()
+                    i = pending.popleft() if affinity is None else self._choose(idle, pending, drawn, draw, affinity)
                     idle.job, idle.buffer = i, bytearray()
                     idle.started = time.monotonic()
                     idle.deadline = idle.started + self.timeout
@@ -524,6 +534,30 @@ class WorkerPool:
         except BaseException:
             self.close()
             raise
+
+    def _choose(self, w: _Worker, pending: "deque[int]", drawn: list[Any], draw: Callable[[], bool],
+                affinity: Callable[[Any], Any]) -> int:
+        """The task (an index of ``drawn``, taken out of ``pending``, which is not empty) for the free worker ``w``
+        under ``affinity`` (see :meth:`run`)."""
+        others = {v.key for v in self.workers if v is not w and v.key is not None}
+
+        def fits(i: int, own: bool) -> bool:
+            k = affinity(drawn[i])
+            return k == w.key if own else k not in others
+        pick = next((i for own in ((True, False) if w.key is not None else (False,))
+                     for i in pending if fits(i, own)), None)
+        while pick is None:
+            n = len(pending)
+            if not draw() or len(pending) == n:
+                break
+            last = pending[-1]
+            if fits(last, True) or fits(last, False):
+                pick = last
+        if pick is None:
+            pick = pending[0]        # every task left is another worker's: the first of them
+        pending.remove(pick)
+        w.key = affinity(drawn[pick])
+        return pick
 
     def _collect(self, w: _Worker, done: dict[int, Outcome]) -> None:
         """Read what is available from a busy worker; on a whole message or on its death, finish the job."""

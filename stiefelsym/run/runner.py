@@ -457,7 +457,10 @@ def _dispatch(claim: Claim, size: Size | None, method: str, seed: int, func: Cal
               options: dict | None, in_worker: bool = False, timeout: float | None = None) -> Result:
     if method == "free" or size is None:
         from stiefelsym.methods.dimension_free import run_free
-        return run_free(claim, func)
+        from stiefelsym.methods.specialise import remember
+        res = run_free(claim, func)
+        remember(claim, func, res)      # the attempt a run of the claim at a size here would make: made
+        return res
     if method == "auto":
         if options:
             return METHOD_RUNNERS["rational"](claim, size.n, size.r, seed, func, options)
@@ -745,8 +748,16 @@ def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Ite
     from stiefelsym.methods.fixed_size import _describe
     with WorkerPool(execute, workers=min(jobs, len(tasks)), timeout=timeout, memory=memory_bytes,
                     describe=_describe, fork=fork) as pool:
-        run_with_corrections(pool.run, tasks, claims, seed, hard, deliver, streams=True)
+        # a worker keeps to one claim's runs while there are others for the other workers: what it computed of the
+        # claim (its graphs, its dimension-free proof) serves the claim's other runs (the records are the same)
+        run_with_corrections(lambda tasks: pool.run(tasks, affinity=_claim_of), tasks, claims, seed, hard, deliver,
+                             streams=True)
     return results
+
+
+def _claim_of(task: Task) -> int:
+    """The claim a task runs (the pool's affinity: a worker takes the runs of the claim it ran last first)."""
+    return task[0]
 
 
 def checked_options(seed: int, timeout: float, memory: float | None, hard: str | None,

@@ -1402,7 +1402,7 @@ def _claim(d: Any, path: str, confinement: str = "namespaces") -> Claim:
               fails_at=None if fails is None else _Lookup("erratum sizes (fails_at)", fails),
               erratum=_get(d, "erratum", str), place=_get(d, "place", str, optional=True) or "",
               slips=_slips(_get(d, "slips", list, optional=True) or []),
-              equivariance=_get(d, "equivariance", str), reviewed=False)
+              equivariance=_get(d, "equivariance", str))
     for f in [c.func] + [k.func for k in corrections]:
         f.loaded_from = path             # the file this process loaded (not what the file's code says of itself)
     for k in range(len(corrections)):

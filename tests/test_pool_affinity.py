@@ -1,0 +1,45 @@
+"""The pool's affinity: a free worker keeps to the key of its last task while there are tasks of keys no other worker
+has, steals another worker's tasks only when none are left, and the outcomes come in the order of the tasks."""
+import os
+import time
+
+import pytest
+
+from stiefelsym.run.pool import WorkerPool
+
+needs_fork = pytest.mark.skipif(not hasattr(os, "fork"), reason="workers need os.fork")
+
+
+def _pid_after(task):
+    time.sleep(0.02)
+    return (task, os.getpid())
+
+
+@needs_fork
+def test_the_tasks_of_one_key_run_in_one_worker_and_come_back_in_order():
+    tasks = [("a", i) for i in range(6)] + [("b", i) for i in range(6)] + [("c", i) for i in range(3)]
+    with WorkerPool(_pid_after, workers=2, timeout=30) as pool:
+        got = list(pool.run(iter(tasks), affinity=lambda t: t[0]))
+    assert [i for i, _ in got] == list(range(len(tasks)))
+    assert [o.value[0] for _, o in got] == tasks
+    pids: dict[str, set] = {}
+    for _, o in got:
+        pids.setdefault(o.value[0][0], set()).add(o.value[1])
+    assert len(pids["a"]) == 1 and len(pids["b"]) == 1 and pids["a"] != pids["b"]
+
+
+@needs_fork
+def test_a_worker_with_nothing_of_its_own_takes_the_other_worker_s_tasks():
+    tasks = [("a", i) for i in range(8)]
+    with WorkerPool(_pid_after, workers=2, timeout=30) as pool:
+        got = list(pool.run(tasks, affinity=lambda t: t[0]))
+    assert [o.value[0] for _, o in got] == tasks
+    assert len({o.value[1] for _, o in got}) == 2      # the second worker was not left idle
+
+
+@needs_fork
+def test_without_affinity_the_tasks_go_in_order_to_the_free_worker():
+    tasks = [("a", i) for i in range(4)]
+    with WorkerPool(_pid_after, workers=2, timeout=30) as pool:
+        got = list(pool.run(tasks))
+    assert [o.value[0] for _, o in got] == tasks
