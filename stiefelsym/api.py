@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Iterable, Sequence, Union
+from typing import Any, Iterable, Sequence, Union
 
 from stiefelsym.claims import Claim, Registry, Size, load_catalog
 from stiefelsym.run import rerun
@@ -74,6 +74,15 @@ def _size_text(text: str) -> tuple[int, int]:
     return int(parts[0]), int(parts[1])
 
 
+def _plain_size(s: Any) -> Size:
+    """A size as the plain (n, r) the run uses: each of n and r read once, and each an int (a subclass of a size or
+    of int, which may answer differently when read again, is not taken as it is)."""
+    n, r = (s.n, s.r) if isinstance(s, Size) else tuple(s) if isinstance(s, (tuple, list)) and len(s) == 2 else (s, None)
+    if type(n) is not int or type(r) is not int:
+        raise ValueError(f"a size is a pair of ints (n, r), not {s!r}")
+    return Size(n, r)
+
+
 def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
            files: PathLike | Iterable[PathLike] = (),
            sizes: Sequence[tuple[int, int] | Size | str] | None = None,
@@ -104,8 +113,8 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
     if isinstance(methods, str):
         methods = (methods,)
     methods = tuple(methods)
-    pairs: list[tuple[int, int] | Size] | None = None if sizes is None else [
-        _size_text(s) if isinstance(s, str) else s for s in sizes]
+    pairs: list[Size] | None = None if sizes is None else [
+        _plain_size(_size_text(s) if isinstance(s, str) else s) for s in sizes]
     named = [claims] if isinstance(claims, (str, Claim)) else (None if claims is None else list(claims))
     ids = [c for c in named or () if isinstance(c, str)]
     registry = Registry()
@@ -118,11 +127,12 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
     selected = [registry.get(c) if isinstance(c, str) else c for c in (named if named is not None else registry)]
     if not selected:
         raise ValueError("no claims to verify (0 claims loaded)")
-    size_list = None if pairs is None else [s if isinstance(s, Size) else Size(*s) for s in pairs]
-    if size_list is not None:
-        for s in size_list:
-            if type(s.n) is not int or type(s.r) is not int:
-                raise ValueError(f"a size is a pair of ints (n, r), not {s}")
+    ids_seen: dict[str, Claim] = {}
+    for c in selected:
+        if ids_seen.setdefault(c.id, c) is not c:
+            raise ValueError(f"two different claims with the id {c.id!r} (a run, its records and its rerun commands "
+                             "name a claim by its id): give each claim an id of its own")
+    size_list = pairs
     for c in selected:
         for m in methods:
             if m == "free":

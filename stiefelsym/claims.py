@@ -421,6 +421,9 @@ class Claim:
             raise ValueError(f"claim {self.id}: blocks_of is a phrase of one line of at most {PLACE_CHARS} characters")
         if expect not in (None, "holds", "nonzero"):
             raise ValueError(f"a correction expects 'holds' or 'nonzero', not {expect!r}")
+        if type(changes) is not int or changes < 0:
+            raise ValueError(f"claim {self.id}: correction {description!r}: changes is the number of changes it makes "
+                             f"to the printed formula (an int >= 0), not {changes!r}")
         # the description names the correction in every record, report and `check` (the variant of a record):
         # two corrections of one description would be one record's variant, and either one's verdict the other's
         if not one_line(description, 10**4) or not description.strip():

@@ -135,3 +135,37 @@ def test_h1_s_statements_and_twins_get_their_verdicts_at_3_2(name, method):
             assert verdict in ("proved", "checked", "numeric"), (cid, verdict)
         else:
             assert verdict not in ("proved", "checked", "numeric"), (cid, verdict)
+
+
+def test_two_claims_of_one_id_and_a_size_that_reads_twice_are_refused_in_process():
+    # h2 I1: the second of two claims with one id was dropped (a false one after a true one: results.ok)
+    from stiefelsym import claim, verify
+    from stiefelsym.claims import Size
+
+    def make(k):
+        return lambda s: {"r": s.X.T @ s.X - k * s.Ir}
+    t = claim("s90-dup", kind="id", sizes=admissible(n_max=3))(make(1)).claim
+    f = dataclasses.replace(t, func=make(2))
+    for order in ([t, f], [f, t]):
+        with pytest.raises(ValueError, match="two different claims with the id 's90-dup'"):
+            verify(order, sizes=[(3, 2)], methods=["modular"], jobs=1)
+
+    # h2 M1: a size whose n answers differently when read again is read once, as a plain pair of ints
+    reads = [0]
+
+    class Sz(Size):
+        def __getattribute__(self, k):
+            if k == "n":
+                reads[0] += 1
+                return 3 if reads[0] <= 1 else 4
+            return object.__getattribute__(self, k)
+    trI4 = claim("s90-tr-in-4", kind="id", sizes=admissible(n_max=4))(lambda s: {"r": s.tr(s.In) - 4}).claim
+    res = verify([trI4], sizes=[Sz(3, 2)], methods=["modular"], jobs=1)
+    assert [(r.n, r.r, r.verdict) for r in res] == [(3, 2, "fails")]
+
+
+def test_a_correction_s_number_of_changes_is_an_int():
+    # h2 I4: changes=2.5 was accepted when registered and refused later, with the whole file, naming neither
+    c = load_catalog().get("ym-monopole")
+    with pytest.raises(ValueError, match="changes is the number of changes"):
+        c.correction("mine", changes=2.5)
