@@ -7,6 +7,7 @@ LaTeX math already: they are checked for balance and placed in a display.
 """
 from __future__ import annotations
 
+import functools
 import re
 import unicodedata
 from collections import Counter
@@ -147,7 +148,10 @@ def tex_escape(text: Any) -> str:
     return _tex_escape(text)
 
 
+@functools.lru_cache(maxsize=1 << 14)
 def _tex_escape(text: str) -> str:
+    """:func:`tex_escape` of a text without code spans (a pure function of the text: a report escapes the same
+    words, a statement, a reduction, a message, for many records)."""
     out = []
     for kind, piece in _script_runs(bind_relations(text)):
         if kind == "sup":

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
+import functools
 import shlex
 import unicodedata
 from fractions import Fraction
@@ -595,8 +596,15 @@ _QUOTED_ANYWHERE = re.compile(r"(\(|; )(paper|claimed): ")
 def of_catalog(r: Result) -> bool:
     """Whether a record is of a claim of the paper's catalog: its rerun command names no claims file (the command
     is the record's own, which report and check compare with what the run writes)."""
+    return _names_no_file(r.rerun or "")
+
+
+@functools.lru_cache(maxsize=1 << 14)
+def _names_no_file(rerun: str) -> bool:
+    """Whether a rerun command names no claims file (a pure function of the text: the reports ask it of every
+    record several times)."""
     try:
-        return "--claims" not in shlex.split(r.rerun or "")
+        return "--claims" not in shlex.split(rerun)
     except ValueError:
         return False
 
