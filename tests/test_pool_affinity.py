@@ -43,3 +43,19 @@ def test_without_affinity_the_tasks_go_in_order_to_the_free_worker():
     with WorkerPool(_pid_after, workers=2, timeout=30) as pool:
         got = list(pool.run(tasks))
     assert [o.value[0] for _, o in got] == tasks
+
+
+@needs_fork
+def test_a_value_computed_in_the_background_is_the_value_computed_here():
+    from stiefelsym.run.isolate import in_background
+    parent = os.getpid()
+    value = in_background(lambda: ("text " * 50000, os.getpid() != parent))
+    assert value() == ("text " * 50000, True)          # computed in a child, whole past a pipe's buffer
+    calls = []
+
+    def raising_in_the_child():
+        calls.append(os.getpid())
+        if os.getpid() != parent:
+            raise RuntimeError("only in the child")
+        return "here"
+    assert in_background(raising_in_the_child)() == "here" and calls == [parent]

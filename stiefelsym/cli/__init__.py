@@ -461,12 +461,15 @@ def _run_log(results: list[Result], meta: dict[str, Any]) -> str:
 def _write_reports(d: Path, results: list[Result], meta: dict[str, Any], catalog: Any = None) -> list[Path]:
     """Render everything first, then write each file atomically (witness scripts for the claims of ``catalog``,
     the ids of the reviewed catalog's claims among those run)."""
+    from stiefelsym.run.isolate import in_background
     mutation = _mutation(d)
     fixed, fixed_meta = stable(results, meta)
+    # the longest text is rendered in a child meanwhile (the same text: a pure function of the records)
+    runs = in_background(lambda: _report.render_latex(fixed, fixed_meta, mutation=mutation, detail=True))
     texts = {"results.json": dump_results(fixed, fixed_meta),
              "verification.md": _report.render_markdown(fixed, fixed_meta, mutation=mutation),
              "verification.tex": _report.render_latex(fixed, fixed_meta),
-             "verification-runs.tex": _report.render_latex(fixed, fixed_meta, mutation=mutation, detail=True),
+             "verification-runs.tex": runs(),
              "run-log.json": _run_log(results, meta)}
     from stiefelsym.methods.witness_scripts import TEMPLATE_DIR, scripts
     for name, text in scripts(fixed, lambda r: _report.labels(r.paper), catalog).items():

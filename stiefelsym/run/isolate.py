@@ -85,6 +85,56 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
     return value
 
 
+def in_background(fn: Callable[[], Any]) -> Callable[[], Any]:
+    """fn() started in a forked child while the caller goes on; the function returned waits for the child and
+    gives fn()'s value.  For a pure computation whose value is pickled back (a report's text): where fork is not
+    available, or the child ends without a value, fn() is computed in this process when the value is asked for,
+    so the value is the same either way."""
+    if not hasattr(os, "fork"):
+        return fn
+    from stiefelsym.run.pool import _death_signal_setup
+    prctl = _death_signal_setup()
+    parent = os.getpid()
+    rfd, wfd = os.pipe()
+    _flush()
+    gc.freeze()
+    try:
+        pid = os.fork()
+    except OSError:
+        os.close(rfd)
+        os.close(wfd)
+        gc.unfreeze()
+        return fn
+    if pid == 0:
+        os.close(rfd)
+        try:
+            if prctl:
+                prctl(1, signal.SIGKILL)     # PR_SET_PDEATHSIG: die with the parent
+                if os.getppid() != parent:
+                    os._exit(0)
+            payload = pickle.dumps(fn(), protocol=pickle.HIGHEST_PROTOCOL)
+            with os.fdopen(wfd, "wb") as pipe:
+                pipe.write(payload)
+        finally:
+            os._exit(0)
+    os.close(wfd)
+    gc.unfreeze()
+
+    def value() -> Any:
+        chunks = []
+        try:
+            while chunk := os.read(rfd, 1 << 20):
+                chunks.append(chunk)
+        finally:
+            os.close(rfd)
+            _kill(pid)
+        try:
+            return pickle.loads(b"".join(chunks))
+        except Exception:   # noqa: BLE001 - the child ended without its value (it raised, it was killed): here then
+            return fn()
+    return value
+
+
 def _flush() -> None:
     """Write out what Python holds in the buffers of the standard output and error."""
     for stream in (sys.stdout, sys.stderr):
