@@ -428,6 +428,10 @@ class Claim:
         # two corrections of one description would be one record's variant, and either one's verdict the other's
         if not one_line(description, 10**4) or not description.strip():
             raise ValueError(f"claim {self.id}: a correction is described by a non-empty string of one line")
+        if description != " ".join(description.split()):
+            # spaces a report does not show (LaTeX drops them) would make two descriptions that read alike
+            raise ValueError(f"claim {self.id}: correction {description!r}: a description has no space at either end "
+                             "and single spaces between its words")
         if any(c.description == description for c in self.corrections):
             raise ValueError(f"claim {self.id}: two corrections described {description!r} (the description names "
                              "the correction in the records)")

@@ -169,3 +169,11 @@ def test_a_correction_s_number_of_changes_is_an_int():
     c = load_catalog().get("ym-monopole")
     with pytest.raises(ValueError, match="changes is the number of changes"):
         c.correction("mine", changes=2.5)
+
+
+def test_two_correction_descriptions_that_read_alike_are_refused():
+    # h2 I2: "use XᵀX" and "use XᵀX " were two corrections whose report lines read the same (LaTeX drops the space)
+    c = load_catalog().get("ym-monopole")
+    for text in ("use X^T X ", " use X^T X", "use  X^T X"):
+        with pytest.raises(ValueError, match="no space at either end"):
+            c.correction(text)
