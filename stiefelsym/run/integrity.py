@@ -329,8 +329,19 @@ def _missing_corrections(records: list[dict], registry: Registry, meta: dict) ->
                 needed.add(((r.get("n"), r.get("r")), planned_method(r)))
             if r.get("n") is None and r.get("verdict") != "proved":
                 needed.add((None, "free"))
+        free_proved = any(r.get("n") is None and r.get("verdict") == "proved" for r in recs)
         for desc in corrections:
             have = variants.get((cid, desc), set())
+            for size, m in sorted(have, key=lambda x: (x[0] or (0, 0), x[1])):
+                # the converse: a correction runs only where the claim as printed failed (or was not proved for
+                # every n, r), so a record of it says what the printed claim's records must say
+                made = free_proved is False if size is None else m in failed
+                if not made:
+                    where = "all n, r" if size is None else f"({size[0]},{size[1]})"
+                    why = ("the dimension-free method proved the claim as printed" if size is None else
+                           f"no record of the claim as printed fails under {m}")
+                    out.append(f"{cid} [{desc}] {where} {m}: a record of a run of this correction its command does not "
+                               f"make ({why})")
             for size, m in sorted(needed, key=lambda x: (x[0] or (0, 0), x[1])):
                 # auto records the method it chose, which may be one the command also planned by name
                 if (size, m) not in have and not (m == "auto" and any(z == size for z, _ in have)):

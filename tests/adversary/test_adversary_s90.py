@@ -177,3 +177,20 @@ def test_two_correction_descriptions_that_read_alike_are_refused():
     for text in ("use X^T X ", " use X^T X", "use  X^T X"):
         with pytest.raises(ValueError, match="no space at either end"):
             c.correction(text)
+
+
+def test_a_record_of_a_correction_needs_its_claim_to_fail_as_printed():
+    # h2 M2: `check --no-rerun` took a printed claim's `fails` edited to `checked` beside the records of its
+    # corrections, which a run makes only where the claim as printed fails
+    import json
+
+    from stiefelsym.run.integrity import _missing_corrections
+    data = json.loads((ROOT / "reports" / "results.json").read_text(encoding="utf-8"))
+    catalog = load_catalog()
+    assert _missing_corrections(data["results"], catalog, data["meta"]) == []
+    for r in data["results"]:
+        if r["claim"] == "ym-monopole" and r["variant"] is None and r["verdict"] == "fails":
+            r["verdict"] = "checked"
+    problems = _missing_corrections(data["results"], catalog, data["meta"])
+    assert problems and all("a record of a run of this correction its command does not make" in p
+                            for p in problems), problems
