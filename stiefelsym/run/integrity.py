@@ -631,7 +631,8 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
     free_done: dict[str, Any] = {}
     for r in records:
         cid, n, rr = r.get("claim"), r.get("n"), r.get("r")
-        where = f"{cid} {'all n, r' if n is None else f'({n},{rr})'} {r.get('method')}"
+        variant = f" [{r['variant']}]" if isinstance(r.get("variant"), str) and r.get("variant") else ""
+        where = f"{cid}{variant} {'all n, r' if n is None else f'({n},{rr})'} {r.get('method')}"
         if cid not in registry:
             echo(f"REJECTED {where}: no such claim in the catalog or the claims files")
             bad += 1
