@@ -28,7 +28,7 @@ verify: venv
 verify-all: venv
 	$(BIN)/stiefelsym verify --jobs $(JOBS) --method auto --method modular --method rational --method float --method free \
 		--report-dir reports/all
-	$(BIN)/python -m pytest -q -m slow || test $$? -eq 5
+	$(MAKE) test-slow
 
 #: pytest-xdist processes of make test (TEST_JOBS=0: serial)
 TEST_JOBS ?= 2
@@ -37,6 +37,12 @@ TEST_JOBS ?= 2
 ## tests", is not a failure)
 test: venv
 	$(BIN)/python -m pytest -q $(if $(filter 0,$(TEST_JOBS)),,-n $(TEST_JOBS)) || test $$? -eq 5
+
+## test-slow: the tests marked slow (larger sizes, more methods, the adversary rounds' longer replays), in
+## TEST_JOBS processes (make verify-all runs them)
+.PHONY: test-slow
+test-slow: venv
+	$(BIN)/python -m pytest -q -m slow $(if $(filter 0,$(TEST_JOBS)),,-n $(TEST_JOBS)) || test $$? -eq 5
 
 ## lint: ruff (the configuration in pyproject.toml) and mypy on the public API
 .PHONY: lint
