@@ -182,7 +182,7 @@ SLOW_TESTS = (
 )
 
 
-#: the tests measured at 4 s or more in a run of the whole suite (stop 90: the default run had grown to 25-40 minutes
+#: the tests measured at 2.5 s or more in a run of the whole suite (stop 90: the default run had grown to 25-40 minutes
 #: on 2 cores): one node id per line of slow_tests.txt, relative to the repository
 _SLOW_LIST = Path(__file__).with_name("slow_tests.txt")
 SLOW_IDS = frozenset(line.strip() for line in _SLOW_LIST.read_text(encoding="utf-8").splitlines()
