@@ -194,3 +194,13 @@ def test_a_record_of_a_correction_needs_its_claim_to_fail_as_printed():
     problems = _missing_corrections(data["results"], catalog, data["meta"])
     assert problems and all("a record of a run of this correction its command does not make" in p
                             for p in problems), problems
+
+
+def test_a_dimension_free_result_kept_for_a_claim_s_runs_proves_only_its_own_graph():
+    # the stop's own attempt on the plan's dimension-free result kept for the claim's runs at sizes (two workers
+    # with the pool's affinity, auto from n = 5 on taking the kept result): a false claim beside a true one
+    got = verdicts_by_size(Path(__file__).parent / "s90" / "remembered.py", "--max-n", "5", "--jobs", "2")
+    sized = {k: v for k, v in got.items() if k[1] is not None}
+    assert {v for (c, _, _), v in sized.items() if c == "fool-remembered-false"} == {"fails"}, got
+    assert {v for (c, _, _), v in sized.items() if c == "fool-remembered-true"} == {"proved"}, got
+    assert got[("fool-remembered-false", None, None)] != "proved"
