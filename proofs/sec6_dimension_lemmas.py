@@ -326,9 +326,13 @@ def pencil_so_rows(s, l1, l2, x):
        for distinct a_i, since ξ ↦ [A, ξ] is injective on so(n).  So Λ_{−λ₂,λ₂} has rank n² − n at every point
        of gl(n), x = 0 included, and is not isomorphic to a Lie–Poisson bracket.  The number the witness
        computes is the rank of those rows at x = 0, where the printed statement gives 0.  The Casimirs printed
-       next divide by λ₁ + λ₂, and the proof of Lemma 6.3 states the isomorphism “if λ₁ + λ₂ ≠ 0, λ₂ ≠ 0”:
-       with that condition Λ_{λ₁,λ₂} vanishes at x₀ = λ₂/(λ₁ + λ₂)·A, the image of 0 under the isomorphism
-       ψ(x) = ch + v − c²A, c² = λ₂/(λ₁ + λ₂), of the claim pencil-casimirs.""",
+       next take the square root of λ₂/(λ₁ + λ₂), and the proof of Lemma 6.3, where all objects are complexified,
+       states the isomorphism with gl(n, ℂ) “if λ₁ + λ₂ ≠ 0, λ₂ ≠ 0”.  Over ℝ the condition is λ₂/(λ₁ + λ₂) > 0:
+       with λ₁ = σ(1 − μ²), λ₂ = σμ², σ ≠ 0 and μ ≠ 0 real, the map ψ(h + v) = μh + v − μ²A (that of the claim
+       pencil-casimirs) takes Λ_{λ₁,λ₂} to σμ times the Lie–Poisson bracket of gl(n), and Λ_{λ₁,λ₂} vanishes at
+       x₀ = ψ⁻¹(0) = μ²A; the correction checks this identity of brackets and the zero at x₀.  For
+       λ₂/(λ₁ + λ₂) < 0 the same map needs an imaginary μ, and the real bracket is that of the other real form
+       so(n) ⊕ i·Sym(n) = u(n) of gl(n, ℂ), not gl(n, ℝ).""",
        statement=r"\lambda_2\ne0\ \Rightarrow\ \Lambda_{\lambda_1,\lambda_2}\cong\text{the Lie--Poisson bracket of }"
                  r"gl(n),\ \text{which vanishes at }0")
 def pencil_gl_isomorphism(s):
@@ -342,16 +346,25 @@ def pencil_gl_isomorphism(s):
     }
 
 
-@pencil_gl_isomorphism.claim.correction("λ₁ + λ₂ ≠ 0 and λ₂ ≠ 0 in place of λ₂ ≠ 0")
+@pencil_gl_isomorphism.claim.correction("λ₂/(λ₁ + λ₂) > 0 in place of λ₂ ≠ 0 (over ℂ: λ₁ + λ₂ ≠ 0 and λ₂ ≠ 0)")
 def pencil_gl_isomorphism_corrected(s):
-    # λ1 = σ(1 − c), λ2 = σc with σ = λ1 + λ2 ≠ 0 (the factor σ is left out): Λ vanishes at x0 = cA
-    c, one = s.scalar("c"), s.q(1)
-    x, x0 = generic_gl(s), s.A * c
+    # λ1 = σ(1 − μ²), λ2 = σμ² with σ = λ1 + λ2 ≠ 0 (σ scales the bracket and is left out); μ is real exactly when
+    # λ2/(λ1 + λ2) > 0.  With L = μ on so(n) and 1 on Sym(n), Λ_{1−μ²,μ²}(x)(Lα, Lβ) = μ⟨ψ(x), [α, β]⟩ for
+    # ψ(h + v) = μh + v − μ²A: for μ ≠ 0, ψ maps Λ to μ times the Lie–Poisson bracket of gl(n), and Λ vanishes at
+    # x0 = ψ⁻¹(0) = μ²A
+    mu, one, zero = s.scalar("mu"), s.q(1), s.q(0)
+    h, v = s.generic("K", "n", "n", "skew"), s.generic("S", "n", "n", "sym")
+    basis, kinds = gl_basis(s)
+    c = mu * mu
+    L = s.mat([[(mu if a[0] == "so" else one) if i == j else zero for j in range(len(kinds))]
+               for i, a in enumerate(kinds)])
+    psi = h * mu + v - s.A * c
+    x0 = s.A * c
     return {
-        "so(n) rows of Lambda(x) - Lambda(x0) - <x - x0, [xi, .]>": (pencil_so_rows(s, one - c, c, x)
-                                                                     - pencil_so_rows(s, one - c, c, x0)
-                                                                     - so_rows(s, x - x0, False)),
-        "Lambda_{1-c,c} at x0 = cA": lambda1(s, x0) * (one - c) + lambda2(s, x0, s.A) * c,
+        "L Lambda_{1-mu^2,mu^2}(h + v) L - mu <psi(h + v), [., .]>":
+            L @ (lambda1(s, h + v) * (one - c) + lambda2(s, h + v, s.A) * c) @ L
+            - s.mat(form_matrix(s, psi, kinds, basis, kinds, False)) * mu,
+        "Lambda_{1-mu^2,mu^2} at x0 = mu^2 A": lambda1(s, x0) * (one - c) + lambda2(s, x0, s.A) * c,
     }
 
 

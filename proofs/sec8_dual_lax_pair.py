@@ -933,8 +933,8 @@ def dual_integrals_exceed_half_leaf_corrected(s):
        place="the paragraph “Chasles Theorem for Manakov Flows” before Theorem 8.6",
        erratum="""The paragraph on the Chasles theorem for Manakov flows takes the integrals J_{2l}(λ) as the
        coefficients of w^{2r−2l} in |a(λ) 𝓛*_man(λ) − w I_n|, under 2r < n.  The Lax matrix 𝓛*_man(λ) of (8) §4 is
-       2r × 2r, so the determinant is not defined.  Corrected: I_{2r}, with which J_{2r} is the coefficient of w^0
-       (claim chasles-manakov).""",
+       2r × 2r, so the determinant is not defined.  Corrected: I_{2r}, with which the coefficient of w^0 is
+       a^{2r−1}(λ)J_{2r}(λ) for the sum J_{2r}(λ) printed next (claim chasles-manakov).""",
        statement=r"|a(\lambda)\mathcal L^*_{man}(\lambda)-w\mathbf I_n|,\ 2r<n:\ \text{the size }n\text{ of }"
                  r"\mathbf I_n\text{ is the size of }\mathcal L^*_{man}(\lambda)")
 def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix(s):

@@ -33,7 +33,7 @@ from stiefelsym.backends.polyfield import SymbolicField
 from stiefelsym.backends.matrix import (DEEPER_NUMBER, CoordinateTracker, Mat, _deeper, block, check_element, definite,
                                        scalar_matrix, unify)
 from stiefelsym.backends.native import _binop, _buf, backend
-from stiefelsym.ir.trace import generic_kind_problem
+from stiefelsym.ir.trace import TraceRefused, generic_kind_problem
 from stiefelsym.backends.reverse import Rev, RevField, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 
 Scalar = Any
@@ -2103,7 +2103,7 @@ def _checked_tangent(base: Scene, flow: Mapping[str, Any]) -> dict[str, Mat]:
     out = {}
     for key, v in dict(flow).items():
         if key not in TANGENT_KEYS:
-            raise KeyError(f"a tangent vector moves {', '.join(TANGENT_KEYS)}, not {key!r}")
+            raise TraceRefused(f"a tangent vector moves {', '.join(TANGENT_KEYS)}, not {key!r}")
         if not isinstance(v, Mat):
             raise TypeError(f"the {key}-component of a tangent vector must be a matrix")
         prim = getattr(base, key)

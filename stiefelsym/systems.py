@@ -55,7 +55,7 @@ import numpy as np
 
 from stiefelsym import scene as scene_module
 from stiefelsym.ir.derivative import CONSTANT_ATTRS, NUMERIC_CALLS
-from stiefelsym.ir.trace import PRIMITIVES, STEP_GRAPH_CHECKS, TraceScene, primitive
+from stiefelsym.ir.trace import PRIMITIVES, STEP_GRAPH_CHECKS, TraceRefused, TraceScene, primitive
 from stiefelsym.backends.matrix import Mat, NeedsCoordinates, _coordinates, _refused, backend, block, definite
 from stiefelsym.backends.reverse import Node, Rev, RevMat, Unsupported, gradient as rev_gradient, leaf as rev_leaf
 from stiefelsym.scene import double_point_of, HermitianComponents, ReverseScene, Scene, _LiftedScene
@@ -73,7 +73,7 @@ def _check_tangent(point: Mapping, tangent: Mapping) -> None:
     component a matrix of its variable's shape."""
     extra = set(tangent) - set(point)
     if extra:
-        raise KeyError(f"a tangent vector moves the variables of the point, not {sorted(map(str, extra))}")
+        raise TraceRefused(f"a tangent vector moves the variables of the point, not {sorted(map(str, extra))}")
     for k, v in tangent.items():
         if not isinstance(v, Mat) or v.shape != point[k].shape:
             raise ValueError(f"the {k}-component of a tangent vector must be a matrix of the shape of {k}")

@@ -258,3 +258,15 @@ def test_a_code_span_is_set_in_typewriter_type():
     assert tex_escape("found by `stiefelsym discover` here") == r"found by \texttt{stiefelsym discover} here"
     assert tex_escape("the term `a_1 & b`") == r"the term \texttt{a\_1 \& b}"
     assert tex_escape("a lone ` backtick") == "a lone ` backtick"
+
+
+def test_text_in_a_jupyter_display_has_no_text_mode_command():
+    """MathJax takes a \\text{} literally: the characters LaTeX treats specially are written in math mode
+    between runs of text, never as \\ensuremath or \\textbackslash inside it (stop 90 h2 M4)."""
+    from stiefelsym.reports.notebook import _tex_text
+    out = _tex_text("rank |Φ| ≤ 2 & {x}_1 \\ 50% ~^ <>")
+    assert "\\ensuremath" not in out and "\\textbackslash" not in out
+    texts = re.findall(r"\\text\{([^{}]*)\}", out)
+    assert "".join(texts) == "rank Φ ≤ 2  x1  50  "
+    assert "{\\vert}" in out and "{\\&}" in out and "{\\backslash}" in out and "{\\_}" in out
+    assert tex_balanced(out) and _tex_text("") == "\\text{}"

@@ -23,6 +23,7 @@ import symengine as se
 
 from stiefelsym.backends.fields import Dual, DualField, Field
 from stiefelsym.backends.matrix import CoordinateTracker, Mat, definite
+from stiefelsym.ir.trace import TraceRefused
 from stiefelsym.scene import (ENGINE_CHECK_DEPTH, FRESH, check_generic_kind, user_name, TANGENT_KEYS, USER_SCALAR, Flow, HermitianComponents, PaperObjects, _fresh_key, _number,
                               engine_check, map_entries)
 from stiefelsym.free.algebra import (LEADING, Letter, NCPoly, NeedsCoordinates, OperatorLetter, apply_operator, as_coef, divisor, coef_latex, derivation,
@@ -78,15 +79,15 @@ def _vanishes_part(p: Any) -> bool:
 def _check_movable(key: Any, tracker: Any) -> None:
     """A key of a tangent vector: one of the letters the algebra moves; the complex point (Zc, Zc_dot),
     which the coordinate scenes move, is left to them (a refusal: undecided); any other key is refused
-    as the coordinate scenes refuse it (KeyError)."""
+    as the coordinate scenes refuse it (TraceRefused)."""
     if key in MOVABLE:
         return
     if key in TANGENT_KEYS:
         raise refuse(f"a tangent vector that moves the complex point ({key}): the dimension-free algebra "
                      f"moves {', '.join(MOVABLE)}", tracker)
     record_refusal(f"a tangent vector that moves {key!r}", tracker)
-    raise KeyError(f"a tangent vector moves {', '.join(MOVABLE)}, not {key!r} "
-                   "(A and the resolvents are constant along flows)")
+    raise TraceRefused(f"a tangent vector moves {', '.join(MOVABLE)}, not {key!r} "
+                       "(A and the resolvents are constant along flows)")
 
 
 class FreeSize:

@@ -887,7 +887,7 @@ class Gradient(tuple):
     def __getitem__(self, k: Any) -> Any:
         if type(k) is str:
             if k not in ("X", "P"):
-                raise KeyError(f"a gradient has the components 'X' and 'P' (dH/dX, dH/dP), not {k!r}")
+                raise TraceRefused(f"a gradient has the components 'X' and 'P' (dH/dX, dH/dP), not {k!r}")
             k = 0 if k == "X" else 1
         return tuple.__getitem__(self, k)
 

@@ -7,7 +7,6 @@ from __future__ import annotations
 import re
 from typing import Any, Sequence
 
-from stiefelsym.latex import tex_escape
 from stiefelsym.results import Result
 
 
@@ -22,9 +21,30 @@ class _Report:
 R = _Report()
 
 
+#: the characters that are not plain text inside ``\\text{}`` for MathJax, KaTeX or LaTeX, written in math mode
+#: between the runs of text instead (MathJax takes a ``\\text{}`` literally: a text-mode command such as
+#: ``\\ensuremath`` or ``\\textbackslash`` would be shown as it is written)
+_MATH_CHARS = {"\\": r"\backslash", "{": r"\{", "}": r"\}", "#": r"\#", "$": r"\$", "%": r"\%", "&": r"\&",
+               "_": r"\_", "~": r"\sim", "^": r"\hat{}", "<": "<", ">": ">", "|": r"\vert"}
+
+
 def _tex_text(text: Any) -> str:
-    """Text inside math mode (MathJax, KaTeX and LaTeX alike): ``\\text{...}``."""
-    return r"\text{" + tex_escape(" ".join(str(text).split())) + "}"
+    """Text inside math mode, as MathJax, KaTeX and LaTeX all read it: runs of ``\\text{...}`` holding the
+    characters as they are (Unicode included), with the characters of :data:`_MATH_CHARS` between them in
+    math mode."""
+    out: list[str] = []
+    run: list[str] = []
+    for ch in " ".join(str(text).split()):
+        if ch in _MATH_CHARS:
+            if run:
+                out.append(r"\text{" + "".join(run) + "}")
+                run = []
+            out.append("{" + _MATH_CHARS[ch] + "}")
+        else:
+            run.append(ch)
+    if run or not out:
+        out.append(r"\text{" + "".join(run) + "}")
+    return "".join(out)
 
 
 # --------------------------------------------------------------------------- results

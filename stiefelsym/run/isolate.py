@@ -13,7 +13,7 @@ import select
 import signal
 import sys
 import time
-from typing import Any, Callable
+from typing import Any, Callable, NoReturn
 
 
 class HardTimeout(Exception):
@@ -29,6 +29,25 @@ class ChildDied(ChildError):
     that failed and aborted) or was killed; the message says how it ended."""
 
 
+def _child(rfd: int, wfd: int, parent: int, prctl: Any, payload: Callable[[], bytes],
+           setup: Callable[[], None] | None = None) -> NoReturn:
+    """The whole life of a forked child: close the pipe's read end, ``setup()``, die with the parent (which
+    may already be gone), write ``payload()`` into the pipe and exit without running the parent's cleanup."""
+    os.close(rfd)
+    try:
+        if setup is not None:
+            setup()
+        if prctl:
+            prctl(1, signal.SIGKILL)     # PR_SET_PDEATHSIG: die with the parent, never outlive it
+            if os.getppid() != parent:
+                os._exit(0)
+        data = payload()
+        with os.fdopen(wfd, "wb") as pipe:
+            pipe.write(data)
+    finally:
+        os._exit(0)
+
+
 def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[BaseException], str]) -> Any:
     """fn() in a forked child, killed after ``seconds``; its exceptions come back as ChildError."""
     if not hasattr(os, "fork"):
@@ -42,27 +61,22 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
     gc.freeze()    # keep the parent's objects out of the child's collections (fewer copied pages)
     pid = os.fork()
     if pid == 0:   # the child: compute, send, exit without running the parent's cleanup
-        os.close(rfd)
-        try:
+        def redirect() -> None:
             os.dup2(err, 2)     # its standard error and output, read by the parent (see _said): flint
             os.dup2(out, 1)     # writes why it aborts to the standard output
             os.close(err)
             os.close(out)
-            if prctl:
-                prctl(1, signal.SIGKILL)     # PR_SET_PDEATHSIG: die with the parent, never outlive it
-                if os.getppid() != parent:
-                    os._exit(0)
+
+        def payload() -> bytes:
             try:
-                payload = pickle.dumps(("ok", fn()))
+                data = pickle.dumps(("ok", fn()))
             except MemoryError as exc:
-                payload = pickle.dumps(("memory", describe(exc)))
+                data = pickle.dumps(("memory", describe(exc)))
             except BaseException as exc:  # noqa: BLE001 - everything goes back to the parent
-                payload = pickle.dumps(("error", describe(exc)))
+                data = pickle.dumps(("error", describe(exc)))
             _flush()            # what it printed, into the files the parent reads (os._exit flushes nothing)
-            with os.fdopen(wfd, "wb") as pipe:
-                pipe.write(payload)
-        finally:
-            os._exit(0)
+            return data
+        _child(rfd, wfd, parent, prctl, payload, redirect)
     os.close(wfd)
     gc.unfreeze()
     try:
@@ -106,17 +120,7 @@ def in_background(fn: Callable[[], Any]) -> Callable[[], Any]:
         gc.unfreeze()
         return fn
     if pid == 0:
-        os.close(rfd)
-        try:
-            if prctl:
-                prctl(1, signal.SIGKILL)     # PR_SET_PDEATHSIG: die with the parent
-                if os.getppid() != parent:
-                    os._exit(0)
-            payload = pickle.dumps(fn(), protocol=pickle.HIGHEST_PROTOCOL)
-            with os.fdopen(wfd, "wb") as pipe:
-                pipe.write(payload)
-        finally:
-            os._exit(0)
+        _child(rfd, wfd, parent, prctl, lambda: pickle.dumps(fn(), protocol=pickle.HIGHEST_PROTOCOL))
     os.close(wfd)
     gc.unfreeze()
 
