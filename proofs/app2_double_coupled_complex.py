@@ -116,8 +116,8 @@ def double_neumann_flow(s):
        in (2) §8 of Theorem 8.1, which (5) §10 extends: 𝓛(λ) = [[−XᵀRẎ, −XᵀRY], [I_r + ẊᵀRẎ, ẊᵀRY]],
        R = (λI_n − A)^{-1}.""",
        statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
-                 r"\mathcal L=\begin{pmatrix}-X^T(\lambda-A)^{-1}\dot Y&-X^T(\mathbf I-\lambda A)^{-1}Y\\"
-                 r"\mathbf I_r+\dot X^T(\mathbf I-\lambda A)^{-1}\dot Y&\dot X^T(\lambda-A)^{-1}Y\end{pmatrix},\ "
+                 r"\mathcal L=\begin{pmatrix}-X^T(\lambda\mathbf I_n-A)^{-1}\dot Y&-X^T(\mathbf I_n-\lambda A)^{-1}Y\\"
+                 r"\mathbf I_r+\dot X^T(\mathbf I_n-\lambda A)^{-1}\dot Y&\dot X^T(\lambda\mathbf I_n-A)^{-1}Y\end{pmatrix},\ "
                  r"\mathcal A=\begin{pmatrix}0&\mathbf I_r\\\Lambda-\lambda\mathbf I_r&0\end{pmatrix}")
 def double_neumann_dual_lax(s):
     """Theorem dual-D: the equations (D-eq) imply the 2r×2r Lax equation (LA3*D) with the printed 𝓛(λ), whose off-diagonal blocks contain (I_n − λA)⁻¹, and 𝓐(λ)."""
@@ -630,9 +630,9 @@ def complex_lax_residual(s, flipped):
        four blocks (the complex form of (2) §8): 𝓛(λ) = [[−ZᵀRŻ̄, −ZᵀRZ̄], [I_r + ŻᵀRŻ̄, ŻᵀRZ̄]],
        R = (λI_n − A)^{-1}.""",
        statement=r"\tfrac{d}{dt}\mathcal L(\lambda)=[\mathcal L(\lambda),\mathcal A(\lambda)],\ "
-                 r"\mathcal L=\begin{pmatrix}-Z^T(\lambda-A)^{-1}\dot{\bar Z}&-Z^T(\mathbf I-\lambda A)^{-1}\bar Z\\"
-                 r"\mathbf I_r+\dot Z^T(\mathbf I-\lambda A)^{-1}\dot{\bar Z}&"
-                 r"\dot Z^T(\lambda-A)^{-1}\bar Z\end{pmatrix},\ "
+                 r"\mathcal L=\begin{pmatrix}-Z^T(\lambda\mathbf I_n-A)^{-1}\dot{\bar Z}&-Z^T(\mathbf I_n-\lambda A)^{-1}\bar Z\\"
+                 r"\mathbf I_r+\dot Z^T(\mathbf I_n-\lambda A)^{-1}\dot{\bar Z}&"
+                 r"\dot Z^T(\lambda\mathbf I_n-A)^{-1}\bar Z\end{pmatrix},\ "
                  r"\mathcal A=\begin{pmatrix}0&\mathbf I_r\\\bar\Lambda-\lambda\mathbf I_r&0\end{pmatrix}")
 def complex_neumann_dual_lax(s):
     """Theorem dual-complex: the Neumann system (W-eq) on the complex Stiefel variety implies the 2r×2r Lax equation (LA3*) with the printed 𝓛(λ), whose off-diagonal blocks contain (I_n − λA)⁻¹, and 𝓐(λ)."""

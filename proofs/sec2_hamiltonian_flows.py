@@ -411,8 +411,8 @@ def generic_adjoint_orbit_dimension(s):
        fails_at=lambda n, r: n == 2 * r + 2,
        place="the paragraph before Lemma 2.5",
        erratum="""The paragraph before Lemma 2.5 says that the generic orbit in Φ(T*V) is regular for
-       n ≤ 2r + 1 and singular otherwise.  For n = 2r + 2 the generic orbit is regular as well (both cases of
-       the formula of Lemma 2.5 give the regular dimension there); the orbit is regular iff n ≤ 2r + 2.  The
+       n ≤ 2r + 1 and singular otherwise.  For n = 2r + 2 the generic orbit is regular as well (there the second
+       case of Lemma 2.5, 2r(n − r − 1) = 2r(r + 1), equals the regular dimension n(n − 1)/2 − [n/2]); the orbit is regular iff n ≤ 2r + 2.  The
        witness codes the answer as a number: 1 for regular, 0 for singular; at n = 2r + 2 it computes 1, where the
        printed statement gives 0.""",
        equivariance="the rank of ad_Phi does not depend on the basis of so(n) and is invariant under Phi -> g Phi g^T",

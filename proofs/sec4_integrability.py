@@ -208,9 +208,9 @@ def manakov_flow_for_a_squared(s):
        exact_corank={7: 0},
        statement=r"\tfrac{d}{dt}\mathcal L_{man}(\lambda)=[\mathcal A_{man}(\lambda),\mathcal L_{man}(\lambda)],\quad "
                  r"\mathcal L_{man}=\Phi+\lambda A,\ \mathcal A_{man}=\mathbb A(\Phi)+\lambda B;\quad "
-                 r"\tfrac{d}{dt}\tr\big(\lambda A+\textstyle\sum_i p_i\wedge e_i\big)^k=0")
+                 r"\tfrac{d}{dt}\tr\big(\lambda A+\textstyle\sum_i p_i\wedge e_i\big)^k=0,\ k=1,2,3")
 def manakov_lax_pair(s):
-    """The Dirac flow of H_𝔸 with the Manakov operator (Manakov) of generic diagonal A, B implies d𝓛/dt = [𝓐, 𝓛] for 𝓛 = Φ + λA, 𝓐 = 𝔸(Φ) + λB, and the integrals tr(λA + Σ p_i ∧ e_i)^k of (man) (Σ p_i ∧ e_i = PXᵀ − XPᵀ) are conserved.  Both statements are linear in B, because the flow of H_𝔸 and the matrix 𝓐 both are, and every diagonal B is Σ_k β_k A^k (distinct a_i), so they are checked for B = A^k, k = 1, …, n − 1, with 𝔸(ξ) = Σ_{m<k} A^m ξ A^{k−1−m}, the entries (Manakov) of claim manakov-operator (B = I gives 𝔸 = 0 and a trivial statement)."""
+    """The Dirac flow of H_𝔸 with the Manakov operator (Manakov) of generic diagonal A, B implies d𝓛/dt = [𝓐, 𝓛] for 𝓛 = Φ + λA, 𝓐 = 𝔸(Φ) + λB, and the integrals tr(λA + Σ p_i ∧ e_i)^k of (man) (Σ p_i ∧ e_i = PXᵀ − XPᵀ) are conserved, checked for k = 1, 2, 3.  Both statements are linear in B, because the flow of H_𝔸 and the matrix 𝓐 both are, and every diagonal B is Σ_k β_k A^k (distinct a_i), so they are checked for B = A^k, k = 1, …, n − 1, with 𝔸(ξ) = Σ_{m<k} A^m ξ A^{k−1−m}, the entries (Manakov) of claim manakov-operator (B = I gives 𝔸 = 0 and a trivial statement)."""
     L = s.Phi + s.lam * s.A
     checks = {}
     for k in range(1, max(s.n, 2)):         # at n = 1 every B is a multiple of A

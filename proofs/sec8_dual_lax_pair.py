@@ -741,7 +741,7 @@ def L_man_dual_mu(t, mu):
                  r"=\rank d\big(\mathcal L^*_{man}(\lambda_1),\dots,\mathcal L^*_{man}(\lambda_n)\big)\big|_{T(T^*V_{n,r})}"
                  r"=2\dim V_{n,r}=2rn-r(r+1)")
 def dual_lax_matrices_determine_the_point(s):
-    """Theorems DUAL and man-dual: (X, P) ↦ 𝓛*_neum(λ), and (X, P) ↦ 𝓛*_man(λ), is locally injective on T*V at a generic point (so a Lax matrix has discrete fibres, which the reflections preserve; that the fibres are exactly the orbits of the reflections, as Theorems DUAL and man-dual say, is not checked here): the Jacobian of the entries at n values λ, λ + 1, …, λ + n − 1 (the residues at a_1..a_n: every λ), with the rows of the constraints (cond_XP), has rank 2 dim V + r(r + 1) = 2nr."""
+    """Theorems 8.1 and 4.4: (X, P) ↦ 𝓛*_neum(λ), and (X, P) ↦ 𝓛*_man(λ), is locally injective on T*V at a generic point (so a Lax matrix has discrete fibres, which the reflections preserve; that the fibres are exactly the orbits of the reflections, as Theorems 8.1 and 4.4 say, is not checked here): the Jacobian of the entries at n values λ, λ + 1, …, λ + n − 1 (the residues at a_1..a_n: every λ), with the rows of the constraints (cond_XP), has rank 2 dim V + r(r + 1) = 2nr."""
     n, r = s.n, s.r
     constraints = s.jacobian(s.constraints.build)
     neum = s.jacobian(lambda t: [L_dual_mu(t, t.lam + t.q(j)) for j in range(t.n)])

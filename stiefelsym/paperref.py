@@ -210,30 +210,37 @@ def printed(label: str) -> str:
 
 #: the words a theorem-like label follows in prose ("Theorem man-dual")
 _KIND_WORDS = ("Theorem", "Proposition", "Lemma", "Corollary", "Remark")
+#: their plurals, followed by a list of labels ("Theorems DUAL and man-dual", "Lemmas LEMA1, LEMA2")
+_PLURALS = {"Theorems": "Theorem", "Propositions": "Proposition", "Lemmas": "Lemma", "Corollaries": "Corollary",
+            "Remarks": "Remark"}
 
 
 @cache
-def _label_patterns() -> tuple[re.Pattern, re.Pattern] | None:
-    """(label in parentheses, kind word and label) for the labels of the table, longest first; an
+def _label_patterns() -> tuple[re.Pattern, re.Pattern, re.Pattern, re.Pattern] | None:
+    """(label in parentheses, kind word and label, plural kind word and a list of labels, a label alone) for the
+    labels of the table, longest first; an
     underscore of a label may be written ``\\_`` (the LaTeX of a statement)."""
     labels = sorted(table(), key=len, reverse=True)
     if not labels:
         return None
     alt = "|".join(re.escape(k).replace("_", r"\\?_") for k in labels)
+    one = r"(?:" + alt + r")(?![\w*()\-])"
     return (re.compile(r"\((" + alt + r")\)"),
-            re.compile(r"\b(" + "|".join(_KIND_WORDS) + r")[ ~]+(" + alt + r")(?![\w*()\-])"))
+            re.compile(r"\b(" + "|".join(_KIND_WORDS) + r")[ ~]+(" + alt + r")(?![\w*()\-])"),
+            re.compile(r"\b(" + "|".join(_PLURALS) + r")[ ~]+(" + one + r"(?:(?:,[ ~]*|,?[ ~]+and[ ~]+)" + one + r")+)"),
+            re.compile(alt.join((r"(?<![\w\-])(", r")(?![\w*()\-])"))))
 
 
 def readable(text: str, statement: bool = False) -> str:
     """``text`` with the paper's label keys replaced by the numbers the paper prints: "(dot_XP3*)" becomes
     "(5) §4" ("(5) of Section 4" in a ``statement``, which is LaTeX), "Theorem man-dual" becomes
-    "Theorem 4.4", "(DUAL)" becomes "(Theorem 8.1)".  A label the table does not know, or of an unnumbered
+    "Theorem 4.4", "Theorems DUAL and man-dual" "Theorems 8.1 and 4.4", "(DUAL)" becomes "(Theorem 8.1)".  A label the table does not know, or of an unnumbered
     display or a section, is left as it is: the keys stay in the headings, as the catalog's names."""
     pats = _label_patterns()
     if pats is None or not text:
         return text
     t = table()
-    paren, named = pats
+    paren, named, plural, label = pats
 
     def ref(m: re.Match) -> str:
         key = m.group(1).replace("\\_", "_")
@@ -252,4 +259,12 @@ def readable(text: str, statement: bool = False) -> str:
             return m.group(0)
         return f"{r['kind']} {r['number']}"
 
-    return paren.sub(ref, named.sub(kind, text))
+    def kinds(m: re.Match) -> str:
+        word = _PLURALS[m.group(1)]
+        refs = [t.get(k.replace("\\_", "_")) for k in label.findall(m.group(2))]
+        if any(r is None or r["kind"] != word for r in refs):
+            return m.group(0)
+        numbers = iter(r["number"] for r in refs)
+        return m.group(1) + " " + label.sub(lambda _: next(numbers), m.group(2).lstrip(" ~"))
+
+    return paren.sub(ref, named.sub(kind, plural.sub(kinds, text)))

@@ -52,6 +52,11 @@ def test_prose_cites_the_printed_numbers():
     assert readable("by (DUAL)") == "by (Theorem 8.1)"
     assert readable("(foo) and Theorem man and (NEUMANN2x) and Lemma 2lx") == \
         "(foo) and Theorem man and (NEUMANN2x) and Lemma 2lx"
+    # plurals with a list of labels, each a theorem of that kind (else the words stay as they are)
+    assert readable("Theorems DUAL and man-dual say") == "Theorems 8.1 and 4.4 say"
+    assert readable("Lemmas LEMA1, LEMA2 and 2l") == "Lemmas 6.2, 6.3 and 2.5"
+    assert readable("Theorems DUAL and LEMA1") == "Theorems DUAL and LEMA1"
+    assert readable("Theorems DUAL and man-dualx") == "Theorems DUAL and man-dualx"
 
 
 def test_the_reports_keep_the_keys_in_their_records():
