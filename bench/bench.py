@@ -451,6 +451,9 @@ def main(argv=None) -> int:
 
     # 2. LA1 exact at (3,1) against the naive sympy baseline (CPU time)
     base: dict[tuple[int, int], float] = {}
+    #: the engine's exact (3,1) measurement of this target, which the side-by-side table quotes (one measurement,
+    #: one ratio)
+    engine: dict[tuple[int, int], tuple[float, str]] = {}
 
     def speedup() -> tuple[float, str]:
         if args.no_baseline:
@@ -459,6 +462,7 @@ def main(argv=None) -> int:
         _wall_s, best, res = _warm_best(lambda: run_one(LA1, Size(3, 1), "exact", seed=0), 10, max(20, args.repeat))
         if res.verdict != "proved":
             raise NotYet(f"exact LA1 (3,1): {res.verdict} {res.message[:120]}")
+        engine[(3, 1)] = (best, res.verdict)
         return base[(3, 1)] / max(best, 1e-9), (f"sympy {base[(3, 1)]:.2f} s CPU, engine {best * 1e3:.3f} ms CPU "
                                                  "(best of 20 warm runs after 10)")
     bench.target("LA1 exact (3,1): speed-up over naive sympy (CPU)", 100000.0, "x", "higher", speedup)
@@ -705,8 +709,11 @@ def main(argv=None) -> int:
                          "ratio": 1.0})
         for m in ("exact", "modular", "rational", "float", "ball", "free"):
             size = None if m == "free" else Size(n, r)
-            _wall_s, best, res = _warm_best(lambda: run_one(LA1, size, m, seed=0), 10, max(20, args.repeat))
-            verdict = res.verdict
+            if m == "exact" and (n, r) in engine:
+                best, verdict = engine[(n, r)]        # the target's own measurement, not a second one
+            else:
+                _wall_s, best, res = _warm_best(lambda: run_one(LA1, size, m, seed=0), 10, max(20, args.repeat))
+                verdict = res.verdict
             ratio = b / best if b is not None and best > 0 else None
             side.append({"size": f"({n},{r})", "method": m, "verdict": verdict, "seconds": best, "ratio": ratio})
             print(f"{f'({n},{r})':>7} {m:>9} {verdict:>12} {best:>10.5f} "
