@@ -164,6 +164,14 @@ def add(*terms: tuple[int, Expr]) -> Expr:
     if gone:
         signs = [u for i, u in enumerate(signs) if i not in gone]
         kids = [k for i, k in enumerate(kids) if i not in gone]
+    # the numbers of a sum are one number, in the place of the first (½ + κ at κ = −½ reads 0, not ½ − ½)
+    at = [i for i, k in enumerate(kids) if k.kind == "num"]
+    if len(at) > 1:
+        total = sum((signs[i] * kids[i].data[0] for i in at), Fraction(0))
+        keep = [i for i in range(len(kids)) if i not in at[1:]]
+        signs[at[0]], kids[at[0]] = (-1, num(-total)) if total < 0 else (1, num(total))
+        pairs = [(signs[i], kids[i]) for i in keep if not (i == at[0] and total == 0)]
+        signs, kids = [u for u, _ in pairs], [k for _, k in pairs]
     if not kids:
         return ZERO
     if len(kids) == 1 and signs[0] == 1:
