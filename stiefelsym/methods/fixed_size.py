@@ -815,6 +815,9 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
         # rank would spend its budget first: the s83 hidden trial's M2)
         return (f"the matrix is {M._shape()[0]}x{M._shape()[1]}: no rank exceeds its full size {size} < "
                 f"{R.expected} ({_stated(R.expected)}; certain)", "certain")
+    if size == 0 and R.expected == 0:
+        return (f"the matrix is {M._shape()[0]}x{M._shape()[1]}, empty: rank 0 at every point "
+                f"({_stated(R.expected)})", True)
     if R.generic and randomized is not None:
         randomized.drew = True
     if R.generic:
