@@ -1,0 +1,75 @@
+"""Stop 91's replays: an attack on what a catalog claim's review rests on (h1), its tricks kept as tests.
+
+- W1: the function object of a reviewed catalog claim kept, its ``__code__`` replaced in the caller's process: the
+  claim's identity and its function's identity held, so its reviewed reason of equivariance reduced the new code to
+  X = X0 and exact proved "the last row of X vanishes" at (3, 2).
+- W2: the same through the function's globals: a helper of the catalog's module rebound (by the caller, or by a
+  claims file loaded into the process after the catalog), which the seal does not watch (the catalog is not the
+  engine).  A reviewed function is now bound to what it computes with as well (``claims._reach``): its code,
+  defaults, closure and the globals it and its helpers read, recorded when the catalog registers it; a function
+  whose record no longer holds is not reviewed, and goes to the Cayley chart like any other.
+"""
+from __future__ import annotations
+
+import pytest
+
+import stiefelsym
+from stiefelsym.claims import reviewed_functions
+
+
+def _bottom_row(s):
+    return {"x": s.X[2:3, :]}
+
+
+def _verdicts(claim) -> dict[str, str]:
+    return {r.method: r.verdict for r in stiefelsym.verify([claim], sizes=[(3, 2)], methods=["exact", "modular"],
+                                                            jobs=1)}
+
+
+def test_a_catalog_function_whose_code_is_swapped_is_not_reviewed():
+    c = stiefelsym.load_catalog().get("neum-gras")
+    assert c.func in reviewed_functions(c)
+    code = c.func.__code__
+    try:
+        c.func.__code__ = _bottom_row.__code__       # the function (and the claim) keep their identity
+        assert c.func not in reviewed_functions(c)
+        assert _verdicts(c) == {"exact": "fails", "modular": "fails"}
+    finally:
+        c.func.__code__ = code
+    assert c.func in reviewed_functions(c)        # the code it was reviewed with is back
+
+
+def test_a_rebound_helper_of_the_catalog_module_unreviews_its_claims(monkeypatch):
+    from stiefelsym.proofs import sec7_grassmannians as m
+    c = stiefelsym.load_catalog().get("neum-gras")
+    assert c.func in reviewed_functions(c)
+    orig = m.neum_gras_rhs
+    monkeypatch.setattr(m, "neum_gras_rhs", lambda s, X, Xdot: [o + X[X.shape[0] - 1, 0] for o in orig(s, X, Xdot)])
+    assert c.func not in reviewed_functions(c)
+    assert _verdicts(c) == {"exact": "fails", "modular": "fails"}     # the residual is −X[3,1]: false on T*V
+    monkeypatch.undo()
+    assert c.func in reviewed_functions(c)
+
+
+def test_a_changed_default_or_closure_unreviews(monkeypatch):
+    from stiefelsym.claims import Claim, _mark_reviewed
+    box = [1]
+
+    def f(s, k=2):
+        return {"x": s.X.T @ s.X - s.Ir * box[0] * (k - 1)}
+    c = _mark_reviewed(Claim(id="closure-probe", paper=("cond_XP",), kind="id", section="t", func=f,
+                             sizes=stiefelsym.admissible(3)))
+    assert reviewed_functions(c) == (f,)
+    box[0] = 2                                        # a global list's contents
+    assert reviewed_functions(c) == ()
+    box[0] = 1
+    monkeypatch.setattr(f, "__defaults__", (3,))
+    assert reviewed_functions(c) == ()
+    monkeypatch.undo()
+    assert reviewed_functions(c) == (f,)
+
+
+@pytest.mark.parametrize("claim_id", ["neum-gras", "pencil-rank-a1", "manakov-lax", "dual-lax-determines-the-point"])
+def test_the_catalog_as_loaded_is_reviewed(claim_id):
+    c = stiefelsym.load_catalog().get(claim_id)
+    assert reviewed_functions(c)[0] is c.func
