@@ -773,10 +773,18 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
                   place=" ".join(place.split()) if isinstance(place, str) else place,
                   slips=tuple(slips) if not isinstance(slips, str) else (slips,),
                   free_max_r=free_max_r)
-        _ACTIVE[-1].add(c)
+        if _ACTIVE[-1].reviewed or not _in_catalog(fn.__module__):
+            # a catalog module imported by a user's file (for a helper) registers its claims with the catalog's
+            # loading only, not as the file's own
+            _ACTIVE[-1].add(c)
         fn.claim = c
         return fn
     return deco
+
+
+def _in_catalog(module: Any) -> bool:
+    """Whether ``module`` (a name) is one of the paper's catalog's."""
+    return isinstance(module, str) and (module == CATALOG or module.startswith(CATALOG + "."))
 
 
 class CatalogError(Exception):

@@ -11,6 +11,8 @@
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 import stiefelsym
@@ -73,3 +75,11 @@ def test_a_changed_default_or_closure_unreviews(monkeypatch):
 def test_the_catalog_as_loaded_is_reviewed(claim_id):
     c = stiefelsym.load_catalog().get(claim_id)
     assert reviewed_functions(c)[0] is c.func
+
+
+def test_a_catalog_module_imported_for_a_helper_adds_none_of_its_claims():
+    # h1 I1: `from stiefelsym.proofs.sec7_grassmannians import columns` in a claims file ran the catalog module's
+    # decorators inside the file's loading: 56 claims (the catalog's, under the file's name, replacing the
+    # catalog's) and a load of 208 s, for a file of one claim
+    reg = stiefelsym.load(Path(__file__).parent / "s91" / "h1" / "helper_import.py", sizes=[(3, 1)])
+    assert [c.id for c in reg] == ["mine-columns"]
