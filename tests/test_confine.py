@@ -258,3 +258,16 @@ def test_path_modules_sees_a_module_put_before_a_library(tmp_path):
         (tmp_path / name).unlink()
     (tmp_path / "pkg" / "__init__.py").write_text("import os")
     assert changed_files(before, path_modules([str(tmp_path)])) == [str(tmp_path / "pkg" / "__init__.py")]
+
+
+def test_a_module_written_beside_the_claims_file_is_named_as_such(tmp_path, monkeypatch, confinement):
+    """A module added to the claims file's own folder, on the import path (the working directory of
+    ``python -m stiefelsym``), while it ran is named as that, not as a change of the engine's files (stop 91 h1 M1:
+    a user wrote an unrelated file beside a long load)."""
+    monkeypatch.syspath_prepend(str(tmp_path))
+    path = tmp_path / "writes.py"
+    path.write_text(f"open({str(tmp_path / 'sibling.py')!r}, 'w').write('y = 1\\n')\n" + CLAIM)
+    refusal = ("a module in the claims file's own folder .*changed on disk.*sibling.py" if confinement == "spawn"
+               else "Read-only file system|changed on disk")
+    with pytest.raises(CatalogError, match=refusal):
+        load_claims_isolated(path, [(3, 2)])

@@ -1439,10 +1439,18 @@ def _engine_unchanged(before: dict[str, str], path: Path) -> None:
     """Raise :class:`CatalogError` when a file of the package, or a top-level module on the import path, changed
     while the claims file's child ran."""
     from stiefelsym.run.confine import changed_files, engine_files, path_modules
-    changed = changed_files(before, {**engine_files(), **path_modules()})
+    engine, modules = engine_files(), path_modules()
+    changed = changed_files(before, {**engine, **modules})
     if changed:
         shown = ", ".join(changed[:5]) + (f" and {len(changed) - 5} more" if len(changed) > 5 else "")
-        raise CatalogError(f"{path}: the engine's files or the modules on its import path changed on disk while "
+        folder = Path(path).resolve().parent
+        if any(Path(p).resolve().parent == folder for p in changed):
+            where = "a module in the claims file's own folder (which is on the import path)"
+        elif all(p in engine for p in changed):
+            where = "the engine's files"
+        else:
+            where = "the engine's files or the modules on its import path"
+        raise CatalogError(f"{path}: {where} changed on disk while "
                            f"the claims file ran ({shown}), by the file or by another process (a package being edited "
                            "or reinstalled meanwhile): no verdict is given, and later runs would use the changed code: "
                            "if the change is not yours, restore the package (e.g. git checkout, or reinstall it) and "
