@@ -144,7 +144,11 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
                         costmodel.check(m, c, s.n, s.r, budget)
     engine = runner.verify
     if scheduler is not None:
+        from stiefelsym.ir.seal import verify as verify_engine
         from stiefelsym.run import distributed
+        # nothing is evaluated in this process then, so the engine (the cluster's client included) is checked
+        # here against the seal of a claims file loaded into it
+        verify_engine("before the run was sent to the cluster")
         engine = distributed.verifier(scheduler)
     results = engine(selected, sizes=size_list, methods=methods, seed=seed, timeout=timeout, memory=memory,
                      jobs=jobs, strict_sizes=named is not None)

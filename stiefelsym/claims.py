@@ -816,6 +816,13 @@ def load_catalog(package: str = CATALOG) -> Registry:
     """Import every module of the paper's catalog and return its claims (safe to call from
     several threads at once: loadings are serialized, and a loading that fails returns nothing)."""
     def loader():
+        if package == CATALOG:
+            # the catalog as it is on disk: every module of it this process imported (a helper module such as
+            # determinants, the package with its MODULES and __path__) is dropped and imported again, so that
+            # nothing a caller or a claims file changed in one is registered as reviewed (a reload of MODULES
+            # alone kept a helper rebound before the loading, and a module added to the package's path)
+            for name in [m for m in sys.modules if _in_catalog(m)]:
+                del sys.modules[name]
         pkg = importlib.import_module(package)
         for name in getattr(pkg, "MODULES", ()):
             full = f"{package}.{name}"

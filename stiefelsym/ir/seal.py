@@ -40,8 +40,9 @@ from typing import Any
 
 #: modules a verdict does not depend on (renderers, the CLI, optional integrations, the flows report's numerical
 #: integration with scipy, which registers nothing and costs most of a sealing's imports): not imported at
-#: sealing time (a claims file that changes one of them changes no verdict)
-_NOT_VERDICT = ("cli", "cli_", "notebook", "pytest_plugin", "distributed", "_dask_plugin", "speed", "costfit",
+#: sealing time (a claims file that changes one of them changes no verdict).  The cluster's client
+#: (stiefelsym.run.distributed) is not among them: its verifier hands the verdicts of a run back
+_NOT_VERDICT = ("cli", "cli_", "notebook", "pytest_plugin", "_dask_plugin", "speed", "costfit",
                 "report", "latex", "flows_report", "integrate", "mutate", "discover", "__main__", "proofs")
 #: third-party modules whose top-level attributes the backends call (every public one is watched by identity:
 #: numpy's ufuncs and array functions too), and Python's builtins

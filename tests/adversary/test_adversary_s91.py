@@ -7,11 +7,22 @@
   claims file loaded into the process after the catalog), which the seal does not watch (the catalog is not the
   engine).  A reviewed function is now bound to what it computes with as well (``claims._reach``): its code,
   defaults, closure and the globals it and its helpers read, recorded when the catalog registers it; a function
-  whose record no longer holds is not reviewed, and goes to the Cayley chart like any other.
+  whose record no longer holds is not reviewed, and goes to the Cayley chart like any other.  A claims file loaded
+  before the catalog rebound ``determinants.det``, a helper module the loading did not reload, so the catalog
+  registered the rebound helper: the loading now imports every module of the catalog afresh from disk.
+- W3: a claims file loaded in-process appended its folder to the catalog package's ``__path__`` and a module to its
+  ``MODULES``: the next loading registered that module's false claim as reviewed (the fresh import closes it).
+- W4: a claims file replaced ``stiefelsym.run.distributed.verifier``, a module the seal left out as one no verdict
+  depends on; a run with a scheduler then handed back ``proved`` for anything.  The cluster's client is sealed now,
+  and the run checks the seal before it is sent.
+- I1: a claims file importing a helper from a catalog module registered that module's claims as its own.
 """
 from __future__ import annotations
 
 from pathlib import Path
+
+import subprocess
+import sys
 
 import pytest
 
@@ -42,8 +53,8 @@ def test_a_catalog_function_whose_code_is_swapped_is_not_reviewed():
 
 
 def test_a_rebound_helper_of_the_catalog_module_unreviews_its_claims(monkeypatch):
-    from stiefelsym.proofs import sec7_grassmannians as m
     c = stiefelsym.load_catalog().get("neum-gras")
+    from stiefelsym.proofs import sec7_grassmannians as m          # the module the claim was loaded from
     assert c.func in reviewed_functions(c)
     orig = m.neum_gras_rhs
     monkeypatch.setattr(m, "neum_gras_rhs", lambda s, X, Xdot: [o + X[X.shape[0] - 1, 0] for o in orig(s, X, Xdot)])
@@ -83,3 +94,30 @@ def test_a_catalog_module_imported_for_a_helper_adds_none_of_its_claims():
     # catalog's) and a load of 208 s, for a file of one claim
     reg = stiefelsym.load(Path(__file__).parent / "s91" / "h1" / "helper_import.py", sizes=[(3, 1)])
     assert [c.id for c in reg] == ["mine-columns"]
+
+
+H1 = Path(__file__).parent / "s91" / "h1"
+
+
+def _script(name: str) -> str:
+    out = subprocess.run([sys.executable, name], cwd=H1, capture_output=True, text=True, timeout=600)
+    return out.stdout + out.stderr
+
+
+def test_a_helper_module_rebound_before_the_catalog_is_loaded_is_not_the_catalog_s():
+    out = _script("api_file_then_catalog.py")       # evil_det.py rebinds determinants.det, then the catalog loads
+    assert "neum-gras (3,2) exact: proved" in out and "neum-gras (3,2) modular: checked" in out, out
+    assert "fails" not in out       # the catalog's neum-gras as on disk: true
+
+
+def test_a_module_added_to_the_catalog_package_is_not_loaded_as_the_catalog():
+    out = _script("api_catalog_path.py")
+    assert "in the catalog: False" in out and "proved" not in out, out
+
+
+def test_the_cluster_client_is_sealed():
+    code = ("import stiefelsym\n"
+            "try:\n    stiefelsym.load_claims_file('evil_dist.py')\n"
+            "except stiefelsym.CatalogError as e:\n    print('refused:', e)\n")
+    out = subprocess.run([sys.executable, "-c", code], cwd=H1, capture_output=True, text=True, timeout=600)
+    assert "refused:" in out.stdout and "the engine was changed" in out.stdout, out.stdout + out.stderr
