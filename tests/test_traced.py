@@ -180,6 +180,25 @@ def test_a_large_graph_is_named_by_its_size_and_the_report_prints_a_smaller_one(
     assert cr.traced() == ("(2,1)", small, 3)
 
 
+def test_the_number_of_graphs_is_not_printed_as_the_number_of_sizes():
+    """Sizes that share a graph: the report counts the sizes and the distinct graphs apart."""
+    from stiefelsym.reports.report import ClaimResults, traced_intro
+    from stiefelsym.results import Result
+    traced = [["x11", "x", "x"]]
+    recs = [Result(claim="shared", paper=[], section="", kind="id", title="", statement="", n=n, r=r,
+                   method="exact", verdict="proved", expected=True, seconds=None, seed=None,
+                   digest="d1" if r == 1 else "d2", traced=traced) for n, r in ((2, 1), (3, 1), (3, 2), (4, 2))]
+    cr = ClaimResults(recs[0])
+    for r in recs:
+        cr.add(r)
+    where, _, graphs = cr.traced()
+    assert (graphs, cr.traced_sizes()) == (2, 4)
+    text = traced_intro(where, graphs, sizes=cr.traced_sizes())
+    assert "its graph depends on the size: its 4 sizes give 2 distinct graphs" in text
+    assert "sizes has a graph of its own" not in text
+    assert "each of its 2 sizes has a graph of its own" in traced_intro("(2,1)", 2, sizes=2)
+
+
 SPOOF = '''
 from stiefelsym import admissible, claim
 

@@ -245,10 +245,13 @@ def telling(changes: list[dict[str, str]]) -> list[dict[str, str]]:
     return changes
 
 
-def traced_intro(where: str, graphs: int, expect: str = "holds") -> str:
-    """The words before a claim's outputs as traced (:meth:`ClaimResults.traced`)."""
+def traced_intro(where: str, graphs: int, expect: str = "holds", sizes: int | None = None) -> str:
+    """The words before a claim's outputs as traced (:meth:`ClaimResults.traced`); ``sizes``: how many
+    sizes the graphs were traced at (:meth:`ClaimResults.traced_sizes`), when more than the graphs."""
+    own = (f"each of its {graphs} sizes has a graph of its own" if sizes is None or sizes <= graphs else
+           f"its graph depends on the size: its {sizes} sizes give {graphs} distinct graphs")
     at = ("one graph for every size run" if not where else f"at {where}" if graphs == 1 else
-          f"at {where} only: the claim's code reads the sizes, and each of its {graphs} sizes has a graph of its own, "
+          f"at {where} only: the claim's code reads the sizes, and {own}, "
           "about which that size's verdict is (results.json and stiefelsym show --size n,r give each); shown: the "
           "smallest size with 1 < r < n, else the smallest, whose graph was read back")
     stated = ("the residuals are stated not to vanish identically all at once: one shown nonzero proves the claim, "
@@ -346,6 +349,11 @@ class ClaimResults:
         if graphs == 1:
             return ("" if len(rs) > 1 or not sized else sized[0].size), rs[0].traced, 1
         return sized[0].size, sized[0].traced, graphs
+
+    def traced_sizes(self) -> int:
+        """How many sizes the claim as printed was traced at (each with its graph; several sizes may
+        share one graph)."""
+        return len({(r.n, r.r) for r in self.printed if r.traced and r.digest and r.n is not None})
 
     def notes(self) -> list[Result]:
         """Results whose message the reader needs: not passing, or not expected."""
@@ -1088,7 +1096,7 @@ def _md_claim(c: ClaimResults) -> list[str]:
         out += [f"- {m}: {_md_escape(unicode_words(engine_words(text)))}" for m, text in how] + [""]
     where, traced, graphs = c.traced()
     if traced:
-        out += [f"{_md_escape(traced_intro(where, graphs, c.expect))}:", ""]
+        out += [f"{_md_escape(traced_intro(where, graphs, c.expect, c.traced_sizes()))}:", ""]
         out += [f"- {_md_escape(name) + ': ' if name else ''}{_md_escape(text)}" for name, text, _tex in traced] + [""]
     if any(r.derivation and r.verdict == "proved" for r in c.printed):
         out += ["The dimension-free derivation (residual, rules applied, normal form) is in "
@@ -2110,7 +2118,7 @@ def _tex_traced(c: ClaimResults) -> list[str]:
     where, traced, graphs = c.traced()
     if not (traced and c.own):
         return []
-    return [tex_escape(traced_intro(where, graphs, c.expect)) + ":"] + _tex_items(
+    return [tex_escape(traced_intro(where, graphs, c.expect, c.traced_sizes())) + ":"] + _tex_items(
         [(tex_escape(f"{name}: ") if name else "")
          + (_tex_inline(tex, always=True) if math_ok(tex) and tex.isascii() and len(text) <= TEX_TRACED_CHARS
             else tex_escape(text).replace(")", r")\allowbreak{}")) for name, text, tex in traced])
