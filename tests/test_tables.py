@@ -189,3 +189,15 @@ def test_the_latex_states_the_range_of_the_rows_as_the_markdown_does(small):
     assert "(n ≤ 4; n ≤ 6 without the completeness checks)" in md.splitlines()[0]
     T.extended_n_max = 4
     assert r"\paragraph{Dimensions, printed against computed ($n\le 4$).}" in tables.render_latex(T, {})
+
+
+def test_the_columns_cite_the_places_of_the_paper_they_compute():
+    """(A1) is the first condition in the proof of Lemma 6.3 (not the label A2, the equation (11) §6 of the
+    second condition); the invariant metrics are Proposition 4.6 in §4; the Lax matrix whose integrals N
+    indep. counts is the display (2) §8, not (3) §8 (LA4), which holds the matrices 𝓐*_neum."""
+    labels = json.loads((ROOT / "proofs" / "paper_labels.json").read_text(encoding="utf-8"))
+    assert tables.QUANTITIES["A1"][0] == tables.QUANTITIES["A1_t"][0] == "LEMA2"
+    assert (labels["LEMA2"]["kind"], labels["LEMA2"]["number"]) == ("Lemma", "6.3")
+    assert "(LA4)" not in tables.QUANTITIES["N_rank"][1] and "(2) §8" in tables.QUANTITIES["N_rank"][1]
+    assert (labels["LA4"]["number"], labels["LA4"]["section"]) == ("3", "8")
+    assert any(title.startswith("§4, §7, §8: invariant metrics") for title, _ in tables.GROUPS)

@@ -508,8 +508,8 @@ QUANTITIES = {
     "L5L6_corrected": ("L6", "the same with (L6) read as [A1, η1] ⟂ so(r)_{h1}; printed: r"),
     "leaf_pushforward": ("dimension", "generic rank of dΘ·ω⁻¹·dΘᵀ (Θ is Poisson: the same leaf)"),
     "complete_F": ("LEMA2", "generic rank of (d𝓕)·Λ1 (independent Casimirs on the leaf); printed: l"),
-    "A1": ("A2", "generic rank of Λ_{1,−1} at Θ(X,P); printed: n² − n  (A1, LAMBDA, L3, L4)"),
-    "A1_t": ("A2", "generic rank of Λ_{1,t} (t a variable) and of Λ2; printed: n² − n"),
+    "A1": ("LEMA2", "generic rank of Λ_{1,−1} at Θ(X,P); printed: n² − n  (A1, LAMBDA, L3, L4)"),
+    "A1_t": ("LEMA2", "generic rank of Λ_{1,t} (t a variable) and of Λ2; printed: n² − n"),
     "KER": ("KER", "dim ker Λ1 at h = diag(h₁, 0), with the printed kernel checked inside"),
     "A2": ("A2", "dim of ker Λ_{1,−1} restricted to ker Λ1 at h = diag(h₁, 0), A diagonal  (L5–L8)"),
     "torus": ("dim_fol", "2 dim V − rank d(Θ*𝓕, Ψ)  (NEUMANN)"),
@@ -517,7 +517,7 @@ QUANTITIES = {
     "NEUMANN2": ("NEUMANN2", "generic rank of (d𝓕)·Λ1 at Ψ = 0; printed r(n−r) = dim G(n,r)"),
     "N": ("2r-integrals", "Σ_l (deg I_2l) = Σ_{l=1}^r (n − l) = dim V"),
     "N_rank": ("2r-integrals", "rank of d tr(a(λ)𝓛*(λ))^k (k ≤ 2r, enough λ) on T*V: the independent integrals of the "
-               "dual Lax matrix (LA4) among the N (nothing printed: the paper says some are dependent)"),
+               "dual Lax matrix 𝓛*_neum(λ) (the display (2) §8) among the N (nothing printed: the paper says some are dependent)"),
     "N_dependent": ("2r-integrals", "some of the N integrals are dependent (1) or not (0): the computed rank below N"),
     "N_vs_l": ("2r-integrals", "N > l (half the leaf (dimension)): some of the N integrals are dependent"),
     "invariant_forms": ("SO(n-r)-action", "dim of SO(r)×SO(n−r)-invariant quadratic forms on the fibre; printed: dim span{tr PᵀP, tr (XᵀP)²}"),
@@ -804,7 +804,7 @@ def adjugate(M: Z) -> Z:
 
 
 def dual_lax_rows(pt: Point, tangent: list[tuple[Z, Z]]) -> list[list]:
-    """The differentials of tr(a(λ)𝓛*(λ))^k, k = 1..2r, 𝓛* of (LA4), a(λ) = det(λI − A), at 2rn + 1
+    """The differentials of tr(a(λ)𝓛*(λ))^k, k = 1..2r, 𝓛* of the display (2) §8, a(λ) = det(λI − A), at 2rn + 1
     integer values of λ (each row is a polynomial of degree <= 2rn in λ)."""
     n, r = pt.n, pt.r
     X, P, A = pt.X, pt.P, pt.A
@@ -1130,7 +1130,7 @@ GROUPS = (
     ("§6: the pencil Λ1, Λ2 (Lemmas LEMA1, LEMA2) and the tori of the Neumann systems",
      ("leaf", "leaf_singular", "leaf_pushforward", "complete_F", "A1", "A1_t", "KER", "A2", "L5L6", "L5L6_corrected",
       "torus", "torus_complete")),
-    ("§3, §7, §8: invariant metrics, Grassmannians, the count N",
+    ("§4, §7, §8: invariant metrics, Grassmannians, the count N",
      ("invariant_forms", "NEUMANN2", "N", "N_rank", "N_dependent", "N_vs_l")),
 )
 
