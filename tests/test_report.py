@@ -582,7 +582,27 @@ def test_the_headline_and_the_summary_table_count_the_same_claims_as_holding():
     text, _ = headline(claims)
     assert text.startswith("Of the catalog's 2 claims (the paper's checkable statements, and some forms of them: corrected, more general, or lemmas of a proof), 1 holds as printed at every size computed")
     assert "1 holds where decided but was left undecided at some size (a)" in text
-    assert section_counts(claims)["every size"] == 1
+    assert section_counts(claims)["hold at every size"] == 1
+
+
+def test_the_headline_and_the_summary_table_tell_proofs_from_random_checks():
+    """A claim that holds at every size computed but is only checked (at random points) at one of them is not
+    counted as proved there: the headline says how many rest on checks, with their false-pass bound; a proof
+    for every n at one r is counted apart from one for every n and r."""
+    from stiefelsym.reports.report import headline, section_counts
+    cert = "cofactor certificate of 1 residual entry (for every n at r = n, the only r the claim is stated for: it uses X X^T = I_n)"
+    rs = [result("a", 3, 1, "exact", "proved"), result("a", 6, 1, "modular", "checked", false_pass_bound=2.5e-31),
+          result("b", 3, 1, "exact", "proved"), result("c", None, None, "free", "proved", certificate=cert),
+          result("c", 3, 3, "modular", "checked")]
+    claims = group_by_claim(rs)
+    text, _ = headline(claims)
+    assert ("3 hold as printed at every size computed (2 proved at every size computed; 1 of them proved for every "
+            "size at once: 0 for every n and r, and, stated at particular r, for every n: 1 at r = n; 1 rests at some "
+            "size on a check at random points alone, no method proving it there, with a false-pass probability of "
+            "at most 2.5·10⁻³¹ per check)") in text
+    counts = section_counts(claims)
+    assert (counts["proved for all n, r"], counts["proved for every n at one r"], counts["hold at every size"],
+            counts["proved at every size"]) == (0, 1, 3, 2)
 
 
 def test_the_report_of_a_claims_file_counts_its_statements_not_the_papers():
@@ -676,15 +696,16 @@ def test_the_summary_by_section_is_the_same_in_both_documents(results):
     summary = md[md.index("## Summary"):md.index("## §2")]
     md_rows = [[c.strip().strip("*") for c in line.split("|")[1:-1]]
                for line in summary.splitlines() if line.startswith("| ") and not line.startswith("| ---")]
-    assert md_rows[0] == ["section", "claims", "all n, r", "every size", "fail as printed", "unexpected"]
-    table = tex[tex.index(r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}"):]
+    assert md_rows[0] == ["section", "claims", "proved for all n, r", "proved for every n at one r",
+                          "hold at every size", "proved at every size", "fail as printed", "unexpected"]
+    table = tex[tex.index(r"\begin{tabular}{@{}P{5.6cm}rrrrrrr@{}}"):]
     table = table[:table.index(r"\end{tabular}")]
     tex_rows = [[c.strip() for c in line.removesuffix(r"\\").split("&")] for line in table.splitlines()
                 if line.endswith(r"\\") and not line.startswith("section")]
     numbers = [row[1:] for row in md_rows[1:md_rows.index(next(r for r in md_rows if r[0] == "claim"))]]
     assert numbers == [row[1:] for row in tex_rows]
     *rows, total = numbers
-    assert total == [str(sum(int(r[i]) for r in rows)) for i in range(5)]
+    assert total == [str(sum(int(r[i]) for r in rows)) for i in range(7)]
 
 
 def test_markdown_math_sets_the_underscore_of_a_name_in_text_as_math():

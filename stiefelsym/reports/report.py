@@ -185,11 +185,12 @@ EXPECTED_EXPLANATION = (
     "command exits with status 1 if there is any.")
 
 SECTION_TABLE_INTRO = (
-    "Per section of the paper: its claims; those proved for every n and r at once (dimension-free, as "
-    "printed; for a statement made at one r, every n at that r, and for one made at r = 1 and at r = n, "
-    "every n at each); those that hold as printed at every size computed (proved, checked at random "
-    "exact points, or numeric: within a floating-point error bound); those that fail as printed (the "
-    "errata); and those with a verdict the catalog does not expect.")
+    "Per section of the paper: its claims; those proved as printed for every n and r at once "
+    "(dimension-free); those stated at one r and proved for every n at that r (and for one made at r = 1 "
+    "and at r = n, every n at each); those that hold as printed at every size computed (proved, checked "
+    "at random exact points, or numeric: within a floating-point error bound), and those of them proved "
+    "at every size computed (for every size at once, or by some method at each size); those that fail as "
+    "printed (the errata); and those with a verdict the catalog does not expect.")
 
 ERRATA_INTRO = (
     "Statements that fail as printed.  Each comes with a witness, reproducible with the rerun "
@@ -1600,6 +1601,7 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
                "and, stated at particular r, for every n: "
                + ", ".join(f"{v} {k.removeprefix('every n ')}" for k, v in one_r))
     holds = sum(map(holds_at_every_size, claims))
+    proved = sum(map(proved_at_every_size, claims))
     # a claim that no method decided at some computed size is not said to hold there
     undecided = [c for c in claims if not c.failures and not holds_at_every_size(c)]
     open_ = [c.id for c in undecided if any(r.verdict in PASSING for r in c.printed)]
@@ -1610,7 +1612,7 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
              f"corrected, more general, or lemmas of a proof)" if paper else
              f"the {len(claims)} {'statement' if len(claims) == 1 else 'statements'} verified")
     text = (f"Of {whose}, {holds} {'holds' if holds == 1 else 'hold'} as printed at "
-            f"every size computed ({at_once}), "
+            f"every size computed{_proved_words(claims, holds, proved, at_once)}, "
             + (f"{len(open_)} {'holds' if len(open_) == 1 else 'hold'} where decided but "
                f"{'was' if len(open_) == 1 else 'were'} left undecided at some size ({named}), " if open_ else "")
             + (f"{len(nowhere)} {'was' if len(nowhere) == 1 else 'were'} decided at no size ({unnamed}), "
@@ -1619,6 +1621,34 @@ def headline(claims: list[ClaimResults], paper: bool = True) -> tuple[str, list[
             f"{_errata_words(errata)} ({_corrections_proved_words(corrected_free, errata if paper else [])})."
             + (_slips_words(errata) if paper else "") + _shadowing_words(claims))
     return text, errata
+
+
+def _proved_words(claims: list[ClaimResults], holds: int, proved: int, at_once: str) -> str:
+    """The headline's words after the count of the claims that hold as printed at every size computed: how
+    many of them are proved at every size and how many rest, at some size, on a randomized or numerical
+    check alone (with the largest false-pass bound of those checks)."""
+    if holds == 0:
+        return ""
+    if proved == holds:
+        return f" ({'it is' if holds == 1 else 'all are'} proved at every size computed; {at_once})"
+    rest = holds - proved
+    sizes = [r for c in claims if holds_at_every_size(c) and not proved_at_every_size(c)
+             for r in c.printed if r.n is not None and r.verdict in PASSING
+             and not any(o.verdict == "proved" and (o.n, o.r) == (r.n, r.r) for o in c.printed)]
+    bounds = [r.false_pass_bound for r in sizes if r.verdict == "checked" and r.false_pass_bound is not None]
+    kinds = ("at random points" if not any(r.verdict == "numeric" for r in sizes) else
+             "at random points or numerically (within a floating-point error bound)"
+             if any(r.verdict == "checked" for r in sizes) else "numerically (within a floating-point error bound)")
+    bound = f", with a false-pass probability of at most {_power_of_ten(max(bounds))} per check" if bounds else ""
+    return (f" ({proved} proved at every size computed; {at_once}; " if proved else " (none proved at every size computed: ")\
+        + (f"{rest} {'rests' if rest == 1 else 'rest'} at some size on a check {kinds} alone, no method proving "
+           f"{'it' if rest == 1 else 'them'} there{bound})")
+
+
+def _power_of_ten(p: float) -> str:
+    """A small probability as m·10⁻ᵏ (one decimal of the mantissa), in Unicode."""
+    mant, exp = f"{p:.1e}".split("e")
+    return f"{mant}·10{str(int(exp)).translate(str.maketrans('-0123456789', '⁻⁰¹²³⁴⁵⁶⁷⁸⁹'))}"
 
 
 def _shadowing_words(claims: list[ClaimResults]) -> str:
@@ -2086,22 +2116,43 @@ def holds_at_every_size(c: ClaimResults) -> bool:
     return bool(sizes) and sizes <= {(r.n, r.r) for r in c.printed if r.n is not None and r.verdict in PASSING}
 
 
+def proved_at_every_size(c: ClaimResults) -> bool:
+    """The claim as printed is proved at every size it was computed at: proved for every size at once, or
+    proved by some method at each computed size (a size passed only by a check at random points, or
+    numerically, is not)."""
+    if c.failures:
+        return False
+    if any(r.n is None and r.verdict == "proved" for r in c.printed):
+        return True
+    sizes = {(r.n, r.r) for r in c.printed if r.n is not None}
+    return bool(sizes) and sizes <= {(r.n, r.r) for r in c.printed if r.n is not None and r.verdict == "proved"}
+
+
+#: the columns of the summary by section, in order (Markdown headings; the LaTeX ones are SECTION_TEX_HEADINGS)
+SECTION_COLUMNS = ("claims", "proved for all n, r", "proved for every n at one r", "hold at every size",
+                   "proved at every size", "fail as printed", "unexpected")
+SECTION_TEX_HEADINGS = ("claims", r"all $n,r$", r"one $r$", "hold", "proved", "fail", "unexp.")
+
+
 def section_counts(cs: list[ClaimResults]) -> dict[str, int]:
-    """Per section: its claims, those proved for every n, r as printed, those that hold as printed
-    at every computed size, those that fail as printed, and those with a verdict not expected."""
-    free = sum(any(r.n is None and r.verdict == "proved" for r in c.printed) for c in cs)
+    """Per section: its claims; those proved dimension-free as printed for every n and r, and those proved
+    for every n at the one r (or the r = 1 and r = n) they are stated for; those that hold as printed at
+    every computed size, and those of them proved at every computed size; those that fail as printed; and
+    those with a verdict not expected."""
+    scopes = [next((free_scope(r) for r in c.printed if r.n is None and r.verdict == "proved"), None) for c in cs]
     fails = sum(bool(c.failures) for c in cs)
-    holds = sum(map(holds_at_every_size, cs))
-    return {"claims": len(cs), "all n, r": free, "every size": holds, "fail as printed": fails,
-            "unexpected": sum(bool(c.unexpected) for c in cs)}
+    counts = (len(cs), scopes.count("all n, r"), sum(s not in (None, "all n, r") for s in scopes),
+              sum(map(holds_at_every_size, cs)), sum(map(proved_at_every_size, cs)), fails,
+              sum(bool(c.unexpected) for c in cs))
+    return dict(zip(SECTION_COLUMNS, counts))
 
 
 def _tex_section_table(claims: list[ClaimResults], meta: dict[str, Any]) -> list[str]:
     """The referee's summary: one row per section of the paper."""
     out = _toc_section("Summary")
     out += [tex_escape(SECTION_TABLE_INTRO + "  Each claim follows, by section."), "",
-            r"\begin{center}\small", r"\begin{tabular}{@{}P{6.2cm}rrrrr@{}}", r"\toprule",
-            r"section & claims & all $n,r$ & every size & fail as printed & unexpected\\", r"\midrule"]
+            r"\begin{center}\small", r"\begin{tabular}{@{}P{5.6cm}rrrrrrr@{}}", r"\toprule",
+            "section & " + " & ".join(SECTION_TEX_HEADINGS) + r"\\", r"\midrule"]
     total: Counter = Counter()
     for sec, cs in group_by_section(claims):
         k = section_counts(cs)
