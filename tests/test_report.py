@@ -1100,3 +1100,20 @@ def test_every_slip_names_a_section_and_claims_of_the_catalog():
         assert slip.section in SECTION_TITLES and slip.lines and slip.printed and slip.meant and slip.why
         assert set(slip.claims) <= ids, slip
     assert len({(s.lines, s.printed) for s in SLIPS}) == len(SLIPS)
+
+
+def test_a_verdict_line_says_where_the_exact_records_are_the_dimension_free_proof_specialised():
+    """At the sizes where auto took the dimension-free proof specialised to the size, the record of exact is no
+    computation of its own: the one-line verdict says at which sizes it is which."""
+    from stiefelsym.reports.report import correction_summary
+    spec = ["the dimension-free proof, specialised: the claim's graph at this size is its graph with symbolic sizes "
+            "(digest 0123456789ab), whose residual rewriting modulo the constraints reduces to 0 for every n and r",
+            "cross-check at this size: the residual vanishes at the modular method's random points"]
+    sizes = [(3, 1), (4, 1), (5, 1), (6, 1)]
+    rs = [result("a", n, r, "exact", "proved", reductions=spec if n >= 5 else []) for n, r in sizes]
+    status, phrases = correction_summary(rs, sizes)
+    assert status == "verified"
+    assert phrases == ["verified at all 4 computed sizes by exact: its own computation at (3,1), (4,1), the "
+                       "dimension-free proof specialised to the size (cross-checked at random points) at (5,1), (6,1)"]
+    _, phrases = correction_summary([result("a", n, r, "exact", "proved") for n, r in sizes], sizes)
+    assert phrases == ["verified at all 4 computed sizes by exact"]

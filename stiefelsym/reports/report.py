@@ -662,6 +662,39 @@ def _method_name(m: str) -> str:
     return "the dimension-free method" if m == "free" else m
 
 
+#: how the record of a size proved by the dimension-free proof specialised to it begins its reductions
+#: (methods/specialise.py): not an independent computation at that size
+SPECIALISED = "the dimension-free proof, specialised"
+
+
+def is_specialised(r: Result) -> bool:
+    """The record's verdict at its size is the dimension-free proof specialised to the size (with a
+    cross-check at random points), not a computation of its own there."""
+    return r.n is not None and bool(r.reductions) and str(r.reductions[0]).startswith(SPECIALISED)
+
+
+def _specialised_words(rs: list[Result], ok: Sequence[tuple[int, int]], planned: Sequence[tuple[int, int]]) -> str:
+    """The words after "verified at … by exact" saying at which of the sizes ``ok`` the verdict is the
+    dimension-free proof specialised to the size, and at which the method's own computation ("" when none
+    is specialised)."""
+    spec = {(r.n, r.r) for r in rs if is_specialised(r) and r.verdict in PASSING}
+    own = {(r.n, r.r) for r in rs if r.n is not None and r.verdict in PASSING and not is_specialised(r)}
+    spec -= own
+    if not spec:
+        return ""
+    universe = planned or ok
+    proof = "the dimension-free proof specialised to the size (cross-checked at random points)"
+    if not own:
+        return f": at each size {proof}"
+    own_at, spec_at = format_sizes(own, 4, universe), format_sizes(spec, 4, universe)
+    # a list of sizes that no rule states is given once: the other set is "the other k sizes"
+    if len(own) > 6 and not own_at.startswith("every") and (len(spec) <= len(own) or spec_at.startswith("every")):
+        own_at = f"the other {len(own)} sizes"
+    elif len(spec) > 6 and not spec_at.startswith("every"):
+        spec_at = f"the other {len(spec)} sizes"
+    return f": its own computation at {own_at}, {proof} at {spec_at}"
+
+
 def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> tuple[str, list[str]]:
     """The status of a candidate correction, aggregated over sizes, and one phrase per method.
 
@@ -696,12 +729,13 @@ def correction_summary(rs: list[Result], planned: Sequence[tuple[int, int]]) -> 
         bound = (f" (p ≤ {format_bound(max(bounds))})" if bounds and max(bounds) > 0
                  else " (exact)" if bounds else "")
         if ok:
+            how = _specialised_words(mrs, ok, planned)
             if planned and set(ok) >= set(planned) and len(planned) > 1:
-                phrases.append(f"verified at all {len(planned)} computed sizes by {m}{bound}")
+                phrases.append(f"verified at all {len(planned)} computed sizes by {m}{bound}{how}")
             elif planned and set(ok) >= set(planned):
-                phrases.append(f"verified at the claim's only size {format_sizes(ok)} by {m}{bound}")
+                phrases.append(f"verified at the claim's only size {format_sizes(ok)} by {m}{bound}{how}")
             else:
-                phrases.append(f"passes at {format_sizes(ok, 6, planned)} by {m}{bound}")
+                phrases.append(f"passes at {format_sizes(ok, 6, planned)} by {m}{bound}{how}")
         if bad:
             phrases.append(f"fails at {format_sizes(bad, 6, planned)} by {m}")
         for v, where in other.items():
