@@ -649,7 +649,7 @@ def test_errata_section_reads_like_a_referees_report():
     md = render_markdown(_erratum_results())
     errata = md[md.index("## Errata"):md.index("## Summary")]
     note = next(line for line in errata.splitlines() if line.startswith("**Note for the authors.**"))
-    assert "(5) §8 [2r-integrals]" in note and "fails at every computed size with r = 2: (3,2), (4,2)" in note
+    assert "(5) §8 [2r-integrals]" in note and "fails at every computed size with r = 2 (the largest r computed): (3,2), (4,2)" in note
     assert "holds as printed at (3,1)" in note and "seed 0" in note and "(0, 0) = 7" in note
     assert "Phi_{ij}^2" in note and "correction" in note
     assert "holds as printed at (3,1)" in errata

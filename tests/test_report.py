@@ -1117,3 +1117,17 @@ def test_a_verdict_line_says_where_the_exact_records_are_the_dimension_free_proo
                        "dimension-free proof specialised to the size (cross-checked at random points) at (5,1), (6,1)"]
     _, phrases = correction_summary([result("a", n, r, "exact", "proved") for n, r in sizes], sizes)
     assert phrases == ["verified at all 4 computed sizes by exact"]
+
+
+def test_a_rule_that_names_the_largest_r_computed_says_so():
+    """"fails at every computed size with r = 3" where no size with r > 3 was computed would read as "only at
+    r = 3": the note says that 3 is the largest r computed; a value inside the range is left as it is."""
+    from stiefelsym.reports.report import _fails_holds_text, format_sizes
+    sizes = [(n, r) for n in range(1, 7) for r in range(1, min(n, 3) + 1)]
+    assert _fails_holds_text([s for s in sizes if s[1] == 3], [s for s in sizes if s[1] != 3]).startswith(
+        "fails at every computed size with r = 3 (the largest r computed): (3,3), (4,3), (5,3), (6,3); holds")
+    assert _fails_holds_text([s for s in sizes if s[1] == 2], [s for s in sizes if s[1] != 2]).startswith(
+        "fails at every computed size with r = 2: (2,2)")
+    assert format_sizes([s for s in sizes if s[0] == 6], 2, sizes) == \
+        "every computed size with n = 6 (the largest n computed; 3 sizes)"
+    assert format_sizes([s for s in sizes if s[0] - 2 * s[1] == 2], 1, sizes) == "every computed size with n = 2r + 2 (2 sizes)"

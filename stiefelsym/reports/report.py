@@ -650,7 +650,33 @@ def format_sizes(sizes: Iterable[tuple[int, int]], limit: int = 4,
     if universe and not rest:
         return f"every computed size ({len(ss)})"
     cond = sizerules.rule(ss, rest) if rest else None
-    return f"every computed size with {cond} ({len(ss)} sizes)" if cond else text
+    if not cond:
+        return text
+    said = at_the_largest(cond, ss + sorted(rest))
+    return (f"every computed size with {said[:-1]}; {len(ss)} sizes)" if said.endswith(" computed)") else
+            f"every computed size with {said} ({len(ss)} sizes)")
+
+
+def at_the_largest(cond: str, universe: Iterable[tuple[int, int]]) -> str:
+    """A rule of sizes that names the largest r (or n) computed, "r = 3" where no size has r > 3, says so:
+    "r = 3 (the largest r computed)", which is not read as "fails only at r = 3"."""
+    sizes = list(universe)
+    if not sizes:
+        return cond
+    top = {"n": max(n for n, _ in sizes), "r": max(r for _, r in sizes)}
+    return re.sub(r"\b([nr]) = (\d+)\b(?! [+−])",
+                  lambda m: m.group(0) + (f" (the largest {m.group(1)} computed)" if int(m.group(2)) == top[m.group(1)]
+                                          else ""), cond)
+
+
+def _fails_holds_text(fails: Iterable[tuple[int, int]], holds: Iterable[tuple[int, int]]) -> str:
+    """:func:`sizerules.fails_holds_text`, its rule saying where it names the largest r or n computed."""
+    fails, holds = sorted(set(fails)), sorted(set(holds))
+    text = sizerules.fails_holds_text(fails, holds)
+    cond = sizerules.rule(fails, holds)
+    head = f"fails at every computed size with {cond}"
+    return text.replace(head, f"fails at every computed size with {at_the_largest(cond, fails + holds)}", 1) \
+        if cond and text.startswith(head) else text
 
 
 def planned_sizes(c: "ClaimResults") -> list[tuple[int, int]]:
@@ -1187,7 +1213,7 @@ def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, co
         lead = escape("In ") + words(c.place) + escape(f" (involves: {at}), the " if at else ", the ")
     else:
         lead = escape(f"In {at}, the " if at else "The ")
-    text = f"statement as printed {sizerules.fails_holds_text(facts['fails'], facts['holds'])}"
+    text = f"statement as printed {_fails_holds_text(facts['fails'], facts['holds'])}"
     small = small_witness_of(c)
     if small is not None:
         text += f". A witness to check by hand, at size {small[0].size}, follows"
