@@ -130,6 +130,25 @@ def test_the_verdict_matrix_is_read_from_a_results_file(run, tmp_path):
     assert "| `c1` |" in md and "F!" in md
 
 
+def test_every_verdict_matrix_names_its_run_and_another_runs_matrix_says_so():
+    """Above each matrix: the commit, command, claims and records of its run; a matrix of another commit or
+    catalog than the first (the main results file) says so, and which one the report is rendered from."""
+    def rec(claim, statement="S"):
+        return {"claim": claim, "statement": statement, "n": 2, "r": 1, "method": "exact", "verdict": "proved",
+                "expected": True}
+    main = tables.verdict_matrix([rec("c1"), rec("c2"), dict(rec("c2"), variant="v")],
+                                 {"commit": "aaaa", "command": "stiefelsym verify --max-n 2"})
+    same = tables.verdict_matrix([rec("c1"), rec("c2")], {"commit": "aaaa"})
+    older = tables.verdict_matrix([rec("c1", "T")], {"commit": "bbbb+dirty"})
+    md = "\n".join(tables.verdict_markdown({"reports/results.json": main, "same.json": same, "old.json": older}))
+    assert ("From the run of commit aaaa (`stiefelsym verify --max-n 2`): 2 claims, 3 records." in md
+            and "From the run of commit aaaa: 2 claims, 2 records." in md)
+    assert md.count("This is another run") == 1
+    assert ("**This is another run than that of reports/results.json**: it is of commit bbbb+dirty, not aaaa, and of "
+            "another catalog (1 claim against 2; 1 claim of reports/results.json is not in it).") in md
+    assert "the report (verification.md) is rendered from reports/results.json" in md
+
+
 @pytest.mark.parametrize("args, message", [
     (("--size", "2,3"), "1 <= r <= n"),
     (("--size", "3,0"), "1 <= r <= n"),

@@ -61,7 +61,7 @@ def _load_verdicts(paths: list[Path], explicit: bool) -> dict[str, Any]:
                 problems = record_problems(r)
                 if problems:
                     raise ValueError(f"record {i + 1} is malformed: {'; '.join(problems)}")
-            out[str(path)] = verdict_matrix(results)
+            out[str(path)] = verdict_matrix(results, payload.get("meta") if isinstance(payload.get("meta"), dict) else None)
         except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
             raise TablesInputError(f"{path} is not a stiefelsym results file: "
                                    f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}") from None

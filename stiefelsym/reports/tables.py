@@ -18,7 +18,10 @@ drawn as integers; every matrix below is polynomial in them, with the degree bou
 """
 from __future__ import annotations
 
+import hashlib
+import json
 import math
+import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable, Iterable
@@ -1268,8 +1271,11 @@ def _notes_markdown() -> list[str]:
     ]
 
 
-def verdict_matrix(results: list[dict]) -> dict[str, Any]:
-    """claim (with its correction as a separate row) × size × method -> verdict (and expected)."""
+def verdict_matrix(results: list[dict], meta: dict | None = None) -> dict[str, Any]:
+    """claim (with its correction as a separate row) × size × method -> verdict (and expected); and the run
+    the records come from (``meta``, the results file's: its commit and command), with its number of claims
+    and a digest of its catalog (the claims' statements as printed), which tell one run's catalog from
+    another's."""
     matrix: dict[str, dict[str, dict[str, list]]] = {}
     sizes, methods = set(), []
     for r in results:
@@ -1284,7 +1290,47 @@ def verdict_matrix(results: list[dict]) -> dict[str, Any]:
 
     def size_key(s):
         return (0, 0) if s == "all" else tuple(int(x) for x in s.split(","))
-    return {"methods": methods, "sizes": sorted(sizes, key=size_key), "claims": matrix}
+    statements = sorted({(r["claim"], str(r.get("statement") or "")) for r in results if not r.get("variant")})
+    run = {"commit": (meta or {}).get("commit"), "command": (meta or {}).get("command"),
+           "claims": len({r["claim"] for r in results}), "records": len(results),
+           "catalog": hashlib.sha256(json.dumps(statements, ensure_ascii=False).encode("utf-8")).hexdigest()[:12]}
+    return {"methods": methods, "sizes": sorted(sizes, key=size_key), "claims": matrix, "run": run}
+
+
+def _claims(k: int) -> str:
+    return f"{k:,} claim" + ("" if k == 1 else "s")
+
+
+def run_words(name: str, vm: dict[str, Any], first: tuple[str, dict[str, Any]] | None) -> list[str]:
+    """The sentences above a verdict matrix: the run it comes from (commit, command, claims, records), and,
+    when its commit or catalog is not that of ``first`` (the first matrix, the main results file), that it is
+    another run and which matrix the report is rendered from."""
+    run = vm.get("run")
+    if not run:
+        return ["The results file does not say which run it is."]
+    command = f" (`{run['command']}`)" if run.get("command") else ""
+    out = [f"From the run of commit {run.get('commit') or 'unknown'}{command}: {_claims(run['claims'])}, "
+           f"{run['records']:,} record{'' if run['records'] == 1 else 's'}."]
+    if first is None or first[1].get("run") is None or first[0] == name:
+        return out
+    ref_name, ref = first[0], first[1]["run"]
+    other_commit = run.get("commit") != ref.get("commit")
+    other_catalog = run.get("catalog") != ref.get("catalog")
+    if not (other_commit or other_catalog):
+        return out
+    ids, ref_ids = ({c.removesuffix(" [corrected]") for c in m["claims"]} for m in (vm, first[1]))
+    parts = []
+    if other_commit:
+        parts.append(f"of commit {run.get('commit') or 'unknown'}, not {ref.get('commit') or 'unknown'}")
+    if other_catalog:
+        missing, extra = len(ref_ids - ids), len(ids - ref_ids)
+        diff = ([f"{_claims(missing)} of {ref_name} {'is' if missing == 1 else 'are'} not in it"] if missing else []) \
+            + ([f"{extra} of its claims {'is' if extra == 1 else 'are'} not in {ref_name}"] if extra else [])
+        parts.append(f"of another catalog ({_claims(run['claims'])} against {ref['claims']}"
+                     + (f"; {', '.join(diff)}" if diff else "; the same claims with other statements") + ")")
+    return out + [f"**This is another run than that of {ref_name}**: it is {', and '.join(parts)}.  Its verdicts are "
+                  f"those of that commit's engine and catalog; where the two matrices differ, the report "
+                  f"(verification.md) is rendered from {ref_name}."]
 
 
 VERDICT_LETTERS = {"proved": "P", "checked": "C", "numeric": "N", "fails": "F", "inconclusive": "I",
@@ -1311,9 +1357,11 @@ def verdict_markdown(verdicts: dict[str, Any]) -> list[str]:
     out += ["Letters: P proved, C checked, N numeric, F fails, I inconclusive, u undecided, E error; "
             "`!` marks a verdict the catalog does not expect; `·` a method not run there.  Size `all` is the "
             "dimension-free method (every n, r).", ""]
+    first = next(iter(verdicts.items()))
     for name, vm in verdicts.items():
         methods, sizes = vm["methods"], vm["sizes"]
-        out += [f"## {name}", "", f"Each cell lists the methods in the order {', '.join(methods)}.", "",
+        out += [f"## {name}", "", " ".join(run_words(name, vm, first)), "",
+                f"Each cell lists the methods in the order {', '.join(methods)}.", "",
                 "| claim | " + " | ".join(sizes) + " |", "|---" * (len(sizes) + 1) + "|"]
         for claim in sorted(vm["claims"]):
             row = vm["claims"][claim]
@@ -1372,9 +1420,15 @@ def render_latex(T: Tables, verdicts: dict[str, Any]) -> str:
     if verdicts:
         out += [r"\paragraph{Verdict matrix.} P proved, C checked, N numeric, F fails, I inconclusive, "
                 r"u undecided, E error; ! unexpected; $\cdot$ not run.", ""]
+        first = next(iter(verdicts.items()))
         for name, vm in verdicts.items():
             methods, vsizes = vm["methods"], vm["sizes"]
-            out += [r"{\scriptsize\setlength{\tabcolsep}{2pt}", r"\begin{longtable}{l" + "c" * len(vsizes) + "}",
+            words = " ".join(run_words(name, vm, first))
+            # (sloppy: a command in typewriter type breaks only at its spaces)
+            out += [r"{\sloppy\noindent\texttt{" + _tex(name) + "}: "
+                    + re.sub(r"\*\*(.+?)\*\*", r"\\textbf{\1}", re.sub(r"`([^`]*)`", r"\\texttt{\1}", _tex(words)))
+                    + r"\par}", "",
+                    r"{\scriptsize\setlength{\tabcolsep}{2pt}", r"\begin{longtable}{l" + "c" * len(vsizes) + "}",
                     r"\caption{" + _tex(name) + " (methods: " + _tex(", ".join(methods)) + r")}\\", r"\toprule",
                     "claim & " + " & ".join(_tex(s) for s in vsizes) + r" \\", r"\midrule", r"\endhead"]
             for claim in sorted(vm["claims"]):
