@@ -180,6 +180,19 @@ def test_the_general_line_of_the_spectral_integrals_is_the_only_one_of_its_shape
     assert sp.contains_printed is (l == 3)      # the printed line holds for l = r only
 
 
+def test_the_report_does_not_test_the_schematic_printed_line_at_1_lt_l_lt_r():
+    """At 1 < l < r the printed general line of (5) §8 ends in “+ ⋯”: discover.md says that no printed formula
+    is tested there (as verification.md does) and what its literal reading gives; at l = 1 and l = r it gives
+    the printed formula's verdict."""
+    from stiefelsym.reports.discover_report import render_markdown
+    md = {l: render_markdown([_space(f"2r-integrals-general-line/l={l}")]) for l in (1, 2, 3)}
+    assert "- the printed formula is not in the space." in md[1] and "- the printed formula holds." in md[3]
+    assert "the printed formula" not in md[2]
+    assert ("- the printed line is schematic at 1 < l < r (it ends in “+ ⋯”, which states no further term), so no "
+            "printed formula is tested at l = 2; read literally as the sums of its l vectors e and any number of p, "
+            "it is not in the space.") in md[2]
+
+
 def test_the_general_line_holds_at_every_l_up_to_n_4():
     """At random points mod p (auto proves it exactly at the sizes within the claim's symbolic budget, which
     takes two minutes: the slow test up to n = 6 runs auto)."""

@@ -33,6 +33,25 @@ def _verdicts(sp: CorrectionSpace) -> str:
     return ", ".join(f"{m} {v}" for m, v in sp.verdicts.items()) or "not verified"
 
 
+#: the claims whose printed formula is a schematic line ("+ ⋯"), and the lines l (at size r) where it states no
+#: term beyond those shown, so that no printed formula can be computed there (verification.md checks the line
+#: where it can be read literally)
+SCHEMATIC = {"2r-integrals-general-line": lambda l, r: 1 < l < r}
+
+
+def _printed_words(sp: CorrectionSpace) -> str:
+    """Whether the printed formula is in the space, or, on a line that the paper writes schematically, that no
+    printed formula is tested there and what its literal reading gives."""
+    verdict = "holds" if sp.contains_printed else "is not in the space"
+    line = re.search(r"\bl = (\d+)\b", sp.ansatz.label)
+    schematic = SCHEMATIC.get(sp.ansatz.claim)
+    if line is None or schematic is None or not schematic(int(line.group(1)), sp.size.r):
+        return f"the printed formula {verdict}"
+    return (f"the printed line is schematic at 1 < l < r (it ends in “+ ⋯”, which states no further term), so no "
+            f"printed formula is tested at l = {line.group(1)}; read literally as the sums of its l vectors e and "
+            f"any number of p, it {'holds' if sp.contains_printed else 'is not in the space'}")
+
+
 def _md_escape(text: str) -> str:
     return text.replace("|", r"\|")
 
@@ -81,7 +100,7 @@ def render_markdown(spaces: Sequence[CorrectionSpace], sweep: Sweep | None = Non
             out.append(f"- ${a.slot_latex} = {sp.latex()}$")
             out += [f"- plus any multiple of ${sp.latex(b)}$" for b in sp.basis]
         if sp.contains_printed is not None:
-            out.append(f"- the printed formula {'holds' if sp.contains_printed else 'is not in the space'}.")
+            out.append(f"- {_printed_words(sp)}.")
         out.append("")
     return "\n".join(out)
 
