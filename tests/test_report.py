@@ -432,11 +432,18 @@ def test_mutation_section_in_markdown(results):
     md = render_markdown(results, {"seed": 0}, mutation=_mutation())
     assert re.findall(r"^## (.*)$", md, re.M)[-1] == "Mutation analysis"
     section = md[md.index("## Mutation analysis"):]
-    assert "| `prep` | rational | checked | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | 50.0% | 50.0% |" in section
-    assert "| `prep` | free | undecided | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | – | – |" in section
+    # the summary: the totals per method, every survivor, the counts; the rest is in mutation.md, not repeated
+    assert "| rational | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | 50.0% | 50.0% |" in section
+    assert "3 mutants of 1 claim (1 more claim not mutated, each with its reason in `mutation.md`): " \
+           "1 refuted, 1 equivalent; 1 survivor." in section
     assert "**1 survivor**" in section and "**survived float, free**" in section
-    assert "`prep#2` line 14: remove the transpose in `Lam.T` in `Lam - Lam.T`" in section
+    assert "`mutation.md` has the whole analysis" in section
     assert "Command: `stiefelsym mutate prep --seed 0`." in section
+    whole = render_mutation_markdown(_mutation())
+    for line in ("| `prep` | rational | checked | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | 50.0% | 50.0% |",
+                 "| `prep` | free | undecided | 3 | 1 | 0 | 1 | 0 | 1 | 1 | 0 | 0 | – | – |",
+                 "`prep#2` line 14: remove the transpose in `Lam.T` in `Lam - Lam.T`"):
+        assert line in whole and line not in section
     assert "## Mutation analysis" not in render_markdown(results)
 
 

@@ -2790,11 +2790,39 @@ def render_mutation_markdown(mutation: Any) -> str:
 
 
 def _md_mutation_section(data: dict[str, Any]) -> list[str]:
+    """The appendix's section on the mutation analysis: its summary (the totals per method, the survivors, how
+    many mutants are equivalent or unresolved), the rest being in ``mutation.md``, which it does not repeat."""
+    claims = data.get("claims", [])
+    mutated = [c for c in claims if not c.get("skipped")]
+    count = sum(len(c.get("mutants", [])) for c in claims)
+    surv = _mutants(data, survivors=True)
+    # every class of mutant, so that the counts add up to the mutants (a class with none left out, survivors kept)
+    classes = [(len(_mutants(data, "killed")), "refuted"), (len(_mutants(data, "equivalent")), "equivalent"),
+               (len(_mutants(data, "unresolved")), "unresolved"),
+               (len(_mutants(data, "unexercised")), "run at no size where the claim as printed passes")]
+    counts = ", ".join(f"{k:,} {what}" for k, what in classes if k)
     out = ["## Mutation analysis", "",
-           "From `mutation.json` (`stiefelsym mutate`; in full in `mutation.md`)."]
+           "From `mutation.json` (`stiefelsym mutate`).  This section is its summary; `mutation.md` has the whole "
+           "analysis: the corruptions, the verdicts per claim and method, and every mutant that is not refuted."]
     out += _md_mutation_facts(data) + [""]
     out += [_md_escape(MUTATION_EXPLANATION), ""]
-    return out + _md_mutation_body(data, full=False)
+    skipped = len(claims) - len(mutated)
+    out += [f"{count:,} mutant{'s' * (count != 1)} of {len(mutated)} claim{'s' * (len(mutated) != 1)}"
+            + (f" ({skipped} more claim{'s' * (skipped != 1)} not mutated, each with its reason in `mutation.md`)"
+               if skipped else "") + f": {counts}; {len(surv)} survivor{'s' * (len(surv) != 1)}.", ""]
+    head = list(MUTATION_COLUMNS)
+    out += ["Per method, over all claims:", ""]
+    out += _md_table(["method"] + head, [[r["method"]] + _mutation_cells(r) for r in data.get("totals", [])],
+                     "l" + "r" * len(head))
+    if surv:
+        out += [f"**{len(surv)} survivor{'s' * (len(surv) != 1)}**: a method passed a mutant that another "
+                "method refuted at the same size, or the dimension-free method proved a mutant that is not "
+                "equivalent.", ""]
+        out += [_md_mutant_item(o) for o in surv] + [""]
+    else:
+        out += ["No survivor: no method passed a mutant at a size where another method refuted it, and the "
+                "dimension-free method proved no mutant that is not equivalent.", ""]
+    return out
 
 
 def _tex_mutation_section(data: dict[str, Any]) -> list[str]:
