@@ -166,12 +166,24 @@ def test_long_witness_is_cut_and_points_to_results_json():
 def test_markdown_escapes_running_text(results):
     md = render_markdown(results)
     # (s74: words with a backslash that is not mathematics, \foo here, are shown verbatim as code, which no reader
-    # takes for math or HTML; elsewhere the running text is escaped)
-    assert "50% of #cases & ~x^2 {b} \\foo <a" in md
+    # takes for math or HTML; the words around them, and elsewhere the running text, are escaped text)
+    assert "50% of #cases & ~x^2 {b} `\\foo` \\<a" in md
     outside = re.sub(r"`[^`]*`", "", md)
     assert "<a|b>" not in outside and "<a\\|b>" not in outside
     plain = render_markdown([replace(r, title=r.title.replace("\\foo", "foo")) for r in results])
     assert r"under\_score" in plain and r"\<a|b\>" in plain
+
+
+def test_only_the_words_with_a_backslash_are_code_and_no_entity_closes_a_link():
+    """A slip quoting the paper's source keeps its words as text, the source's token alone in a code span; a
+    bracket before a parenthesis (which would close a link's text) is set apart by a space, not written as an
+    entity that the raw file would show."""
+    from stiefelsym.reports.report import _md_escape
+    text = "Printed: in the source, “the Neumann flows ({\\ref{No}) are”, which prints (3). Meant: the brace closed."
+    assert _md_escape(text) == ("Printed: in the source, “the Neumann flows `({\\ref{No})` are”, which prints (3). "
+                                "Meant: the brace closed.")
+    out = _md_escape("[Φ, Iₙ − XXᵀ](Iₙ − XXᵀ) and [a](b) and J[1][2]")
+    assert out == "[Φ, Iₙ − XXᵀ] (Iₙ − XXᵀ) and [a] (b) and J[1][2]" and "&#" not in out
 
 
 def test_render_from_round_trip_json(results, tmp_path):

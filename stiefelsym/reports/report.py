@@ -921,10 +921,8 @@ def render_junit(results: Sequence[Result], meta: dict[str, Any] | None = None) 
 
 def _md_escape(text: Any) -> str:
     """Escape Markdown emphasis, HTML, links and images in running text, keeping ``$...$`` math whose
-    vocabulary is mathematics (:func:`math_ok`; other "math", \\href say, and any text with a backslash or a $ are
-    shown as code).  A bracket that would close a link's or an image's text (``](``, ``][``) is written as an HTML
-    entity, not as ``\\]``, which a notebook's MathJax takes for the end of a display, and so is the ``&`` of what
-    would read as an entity (``&#36;``: the claim's own entities stay text)."""
+    vocabulary is mathematics (:func:`math_ok`; other "math", \\href say, and the words of the text with a backslash
+    or a $ are shown as code); the rest as :func:`_md_text`."""
     out: list[str] = []
     code: list[str] = []          # consecutive pieces shown as code: one span (two adjacent ones would read as ``)
     for is_math, seg in split_math(str(text)):
@@ -935,17 +933,32 @@ def _md_escape(text: Any) -> str:
             out.append(f"${_md_math(seg)}$")
             continue
         if is_math:
-            seg = f"${seg}$"
-        if "\\" in seg or "$" in seg or code:
-            # LaTeX that is not mathematics, or a lone $: shown verbatim as code, which no Markdown reader takes
-            # for math (a notebook's MathJax reads \\( in the text as the start of math, and skips code)
-            code.append(seg)
+            # LaTeX that is not mathematics: shown verbatim as code, which no Markdown reader takes for math (a
+            # notebook's MathJax reads \\( in the text as the start of math, and skips code)
+            code.append(f"${seg}$")
             continue
-        seg = re.sub(r"([\\*_`<>])", r"\\\1", re.sub(r"&(?=#?[A-Za-z0-9]+;)", "&amp;", seg))
-        out.append(re.sub(r"\](?=[(\[])", "&#93;", seg))
+        # in running text, only the words with a backslash or a lone $ are code; the words around them stay text
+        for i, piece in enumerate(re.split(r"(\S*[\\$]\S*)", seg)):
+            if i % 2:
+                code.append(piece)
+            elif piece:
+                if code:
+                    out.append(_md_code("".join(code)))
+                    code = []
+                out.append(_md_text(piece))
     if code:
         out.append(_md_code("".join(code)))
     return "".join(out)
+
+
+def _md_text(text: str) -> str:
+    """Running text without mathematics or code, escaped: emphasis, HTML and what would read as an entity
+    (``&#36;``: the claim's own entities stay text), and a bracket that would close a link's text before a
+    destination, ``](``, which is written ``] (`` (not ``\\]``, which a notebook's MathJax takes for the end of a
+    display, nor an entity, which the raw file would show); ``][`` is left as it is (no reference of a link is
+    defined in the reports, so it makes none)."""
+    text = re.sub(r"([\\*_`<>])", r"\\\1", re.sub(r"&(?=#?[A-Za-z0-9]+;)", "&amp;", text))
+    return text.replace("](", "] (")
 
 
 def _md_paragraph(text: Any) -> str:

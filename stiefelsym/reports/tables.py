@@ -1063,9 +1063,9 @@ def _embed(B: Z, n: int, offset: int) -> Z:
 KNOWN_DISAGREEMENTS: dict[str, tuple[str, Callable[[int, int], bool]]] = {
     "regular": ("n = 2r + 2", lambda n, r: n == 2 * r + 2),
     "N_vs_l": ("r = 1 (then N = l = n − 1)", lambda n, r: r == 1),
-    "N_dependent": ("r <= 2 (the N integrals are independent: N = l + [r/2])", lambda n, r: r <= 2),
-    "leaf_singular": ("r = 1 and n <= 2 (2l = n² − n)", lambda n, r: r == 1 and n <= 2),
-    "L5L6": ("r >= 3 (the solutions are 2-dimensional)", lambda n, r: r >= 3),
+    "N_dependent": ("r ≤ 2 (the N integrals are independent: N = l + [r/2])", lambda n, r: r <= 2),
+    "leaf_singular": ("r = 1 and n ≤ 2 (2l = n² − n)", lambda n, r: r == 1 and n <= 2),
+    "L5L6": ("r ≥ 3 (the solutions are 2-dimensional)", lambda n, r: r >= 3),
     "invariant_forms": ("r = 4, or n − r = r = 2, or (n − r, r) = (1, 3)",
                         lambda n, r: r == 4 or (n - r == 2 and r == 2) or (n - r == 1 and r == 3)),
 }
