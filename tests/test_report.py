@@ -1150,3 +1150,17 @@ def test_a_rule_that_names_the_largest_r_computed_says_so():
     assert format_sizes([s for s in sizes if s[0] == 6], 2, sizes) == \
         "every computed size with n = 6 (the largest n computed; 3 sizes)"
     assert format_sizes([s for s in sizes if s[0] - 2 * s[1] == 2], 1, sizes) == "every computed size with n = 2r + 2 (2 sizes)"
+
+
+def test_the_references_say_that_the_appendices_are_sections_9_and_10(results):
+    """The report cites the appendices as §9 and §10, as the paper numbers them (Proposition 9.1 is in Appendix 1,
+    Theorem 10.1 in Appendix 2): the explanation of the references says so once."""
+    import json
+    from pathlib import Path
+    labels = json.loads((Path(__file__).resolve().parents[1] / "proofs" / "paper_labels.json").read_text("utf-8"))
+    assert (labels["YM"]["kind"], labels["YM"]["number"]) == ("Proposition", "9.1")
+    assert (labels["dual-D"]["kind"], labels["dual-D"]["number"]) == ("Theorem", "10.1")
+    md = render_markdown(results)
+    assert "Appendix 1 (magnetic Neumann systems) is Section 9 and Appendix 2 (double, coupled and complex " \
+           "systems) is Section 10" in md
+

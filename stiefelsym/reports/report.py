@@ -156,7 +156,10 @@ GRAPH_EXPLANATION = (
 REFERENCES_EXPLANATION = (
     "A reference such as (9) §4 is equation (9) of Section 4: the paper numbers its equations afresh in each "
     "section, and its theorems, propositions and lemmas by section (Theorem 4.4).  The word in brackets after a "
-    "reference, as in (9) §4 [LA-MAN3], is the paper's own label of it in its LaTeX source.")
+    "reference, as in (9) §4 [LA-MAN3], is the paper's own label of it in its LaTeX source.  The paper's two "
+    "appendices are numbered sections too: Appendix 1 (magnetic Neumann systems) is Section 9 and Appendix 2 "
+    "(double, coupled and complex systems) is Section 10, so that (4) §9 is equation (4) of Appendix 1 and "
+    "Theorem 10.1 a theorem of Appendix 2.")
 
 SCOPE_EXPLANATION = (
     "A claim checks its statement as its display writes it.  Where the paper states a family for every power "
