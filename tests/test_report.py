@@ -1164,3 +1164,14 @@ def test_the_references_say_that_the_appendices_are_sections_9_and_10(results):
     assert "Appendix 1 (magnetic Neumann systems) is Section 9 and Appendix 2 (double, coupled and complex " \
            "systems) is Section 10" in md
 
+
+def test_the_heading_of_an_erratum_leads_with_the_place_of_its_statement():
+    """A statement that is an unlabelled environment (Proposition 4.6) is named in the claim's heading, before the
+    labels of the equations it involves, in both documents; a claim without a place keeps its labels alone."""
+    rs = [result("metrics", 3, 1, "exact", "fails", expected=True, place="Proposition 4.6 and its proof",
+                 erratum="The invariant forms are not only these two."),
+          result("prep", 3, 1, "exact", "proved")]
+    md, tex = render_markdown(rs), render_latex(rs)
+    assert "### `metrics` in Proposition 4.6 and its proof (involves: " in md
+    assert re.search(r"^### `prep` \S", md, re.M) and "### `prep` in " not in md
+    assert r"\subsection*{\texttt{metrics} in Proposition 4.6 and its proof (involves: " in tex

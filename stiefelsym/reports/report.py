@@ -1111,7 +1111,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
 
     out += ["## Errata", ""]
     out += _errata_body(claims, _md_escape, _md_erratum,
-                        lambda c: [f"### `{c.id}` {_md_escape(labels(c.paper))}", ""]
+                        lambda c: [_md_heading(c), ""]
                         + ([f"**{_md_escape(shadow_words(c))}**", ""] if c.shadows else []) + _md_corrections(c))
     out += _md_typo_section(slips)
     out += _md_spelling_section(spelling)
@@ -1149,8 +1149,14 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     return "\n".join(out).rstrip() + "\n"
 
 
+def _md_heading(c: ClaimResults) -> str:
+    """A claim's heading: its id and its labels, led by the place of its misprint where it has one (the statement
+    may be a numbered environment without a label, Proposition 4.6, which its labels alone would not name)."""
+    return f"### `{c.id}` {_placed(c, _md_escape(labels(c.paper)), lambda s: _md_escape(unicode_words(s)))}".rstrip()
+
+
 def _md_claim(c: ClaimResults) -> list[str]:
-    out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
+    out = [_md_heading(c), ""]
     if c.shadows:
         out += [f"**{_md_escape(shadow_words(c))}**", ""]
     if c.title:
@@ -1266,7 +1272,7 @@ def _errata_body(claims: list[ClaimResults], escape: Callable[[str], str], errat
 
 def _md_erratum(c: ClaimResults) -> list[str]:
     facts = _erratum_facts(c)
-    out = [f"### `{c.id}` {_md_escape(labels(c.paper))}".rstrip(), ""]
+    out = [_md_heading(c), ""]
     if c.shadows:
         out += [f"**{_md_escape(shadow_words(c))}**", ""]
     out += [f"**{_note_heading(c)}** "
@@ -2294,7 +2300,7 @@ def _brief_reason(message: str | None) -> str:
 
 
 def _tex_claim_heading(c: ClaimResults) -> str:
-    heading = r"\subsection*{\texttt{" + tex_escape(c.id) + "} " + tex_labels(c.paper) + "}"
+    heading = r"\subsection*{\texttt{" + tex_escape(c.id) + "} " + _placed(c, tex_labels(c.paper), tex_words) + "}"
     # a claims file's claim with a catalog claim's id says whose it is, wherever its heading stands
     return heading + ("\n" + r"\textbf{" + tex_escape(shadow_words(c)) + "}\n" if c.shadows else "")
 
