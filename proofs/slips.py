@@ -92,10 +92,6 @@ SLIPS: tuple[Slip, ...] = (
          "a statement that exists, most likely the set 𝔄 of (20) §2",
          "§2 has no Theorem 2.6 (it has Propositions 2.1, 2.2 and Lemmas 2.3–2.5); §2 itself compares 𝔄 of "
          "(20) §2 with Theorem 6.4 “below”."),
-    Slip("6", "the same paragraph", "1571", "in the source, “the Neumann flows ({\\ref{No}) are”, which prints (3)",
-         "the brace closed",
-         "a brace of the source opens a group that stays open to the end of the document (nothing shows in "
-         "print)."),
     Slip("7", "the first paragraph of §7", "1613", "“the right SO(r)-action described in Section 1”",
          "Section 2", "the right action is (12) §2; Section 1 is the introduction."),
     Slip("7", "the same paragraph", "1618", "“The symplectic leaves in (T*V_{n,r})/SO(r), {·,·}')”",
@@ -203,6 +199,10 @@ SPELLING: tuple[Spelling, ...] = (
     Spelling("6", "the paragraph “Singular matrices A and the Einstein metrics”", "1482–1483",
              "set of function on", "set of functions on"),
     Spelling("6", "the same paragraph", "1488", "is out the scope of this", "is out of the scope of this"),
+    Spelling("6", "a paragraph near the end of §6, the sentence on the Neumann flows", "1571",
+             r"the Neumann flows ({\ref{No}) are", r"the Neumann flows (\ref{No}) are",
+             "a brace of the source opens a group that stays open to the end of the document (nothing shows in "
+             "print)."),
     Spelling("8", "the multi-indices after (5) §8 and before (7) §8, and Proposition 8.4", "1830, 1885, 1950",
              r"\{i_1,\ldots i_k\}", r"\{i_1,\ldots, i_k\}",
              "a comma is missing after the dots, as {1, …, n} on the same lines has it."),

@@ -79,7 +79,8 @@ VERDICT_MEANING = {
 
 #: what each kind of claim is
 KIND_MEANING = {
-    "id": "an identity on T*V (its residuals must vanish)",
+    "id": "an identity (its residuals must vanish at every point of the space it is stated on: T*V, or the phase "
+          "space its claim names)",
     "lax": "a Lax equation implied by a flow",
     "pb": "a Poisson-bracket statement",
     "dim": "a dimension, rank or count",
@@ -1401,9 +1402,11 @@ def _witness_place(w: dict[str, Any], on: list[str], tex: bool) -> str:
                     + held + " hold exactly)")
         return (", a point (Z, V) of TW\\_{n,r}, V = Ż, given by the real and imaginary parts of Z and V ("
                 + held + " hold exactly)")
+    # a second point (Y, Q: the double and the coupled systems) puts the witness on another phase space than T*V
+    space = "the claim's phase space" if any("Y" in k or "Q" in k for k in on) else "T*V"
     if tex:
-        return tex_escape(f", a point of T*V ({', '.join(on)} hold exactly)")
-    return rf", a point of T\*V ({', '.join(_md_escape(k) for k in on)} hold exactly)"
+        return tex_escape(f", a point of {space} ({', '.join(on)} hold exactly)")
+    return f", a point of {_md_escape(space)} ({', '.join(_md_escape(k) for k in on)} hold exactly)"
 
 
 def _realified(w: dict[str, Any]) -> str:

@@ -1,3 +1,4 @@
+# ruff: noqa: F401
 """A claims file that, loaded in-process, replaces stiefelsym.run.distributed.verifier (an engine module left out of
 the seal: "a claims file that changes one of them changes no verdict"): the run with a scheduler then hands back
 'proved' for everything.  Its own claim is false."""
