@@ -9,6 +9,7 @@ engine decides how to check them.
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import hashlib
 import importlib
@@ -529,10 +530,13 @@ def _reach(func: Callable) -> tuple:
                 except ValueError:          # an empty cell
                     slots.append((cell, "cell", None, None))
             g = v.__globals__
+            slots.append((g, "__builtins__", id(g["__builtins__"]) if "__builtins__" in g else None, None))
             for name in sorted(own):
                 if name in g:
                     value(g, name, g[name], own)
                 elif hasattr(builtins, name):
+                    # a builtin: absent from the module (a global of that name would shadow it), and itself
+                    slots.append((g, name, None, None))
                     slots.append((vars(builtins), name, id(getattr(builtins, name)), None))
         elif isinstance(v, types.ModuleType) and mine(v.__name__):
             attrs = vars(v)
@@ -579,6 +583,13 @@ def reviewed_functions(claim: Any) -> tuple[Callable, ...]:
     global it or its helpers read rebound: :func:`_reach`) is no longer one of them."""
     hit = _REVIEWED.get(id(claim))
     if hit is None or hit[0]() is not claim:
+        return ()
+    from stiefelsym.ir.seal import sealed
+    if sealed():
+        # a claims file was imported into this process (load_claims_file), with its full powers over it: the
+        # import machinery, the catalog's modules, builtins, hooks; what the catalog was reviewed as is no longer
+        # certain here, so no stated reason is relied on (the CLI, stiefelsym.load and the pytest plugin import a
+        # file in fresh interpreters only, and keep them)
         return ()
     return tuple(f for f in hit[1] if (p := _PRINTS.get(id(f))) is not None and p[0] is f and _intact(p[1]))
 
@@ -773,9 +784,9 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
                   place=" ".join(place.split()) if isinstance(place, str) else place,
                   slips=tuple(slips) if not isinstance(slips, str) else (slips,),
                   free_max_r=free_max_r)
-        if _ACTIVE[-1].reviewed or not _in_catalog(fn.__module__):
+        if _ACTIVE[-1].reviewed or not _catalog_source(fn):
             # a catalog module imported by a user's file (for a helper) registers its claims with the catalog's
-            # loading only, not as the file's own
+            # loading only, not as the file's own (a function that only names a catalog module is the file's)
             _ACTIVE[-1].add(c)
         fn.claim = c
         return fn
@@ -785,6 +796,26 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
 def _in_catalog(module: Any) -> bool:
     """Whether ``module`` (a name) is one of the paper's catalog's."""
     return isinstance(module, str) and (module == CATALOG or module.startswith(CATALOG + "."))
+
+
+def _catalog_source(fn: Callable) -> bool:
+    """Whether ``fn`` is a function of a catalog module as it lies in the catalog's folder on disk (its module's
+    name and the file its code was compiled from)."""
+    code = getattr(fn, "__code__", None)
+    if not _in_catalog(getattr(fn, "__module__", None)) or code is None:
+        return False
+    try:
+        return Path(code.co_filename).resolve().parent == _catalog_folder()
+    except (OSError, ValueError):
+        return False
+
+
+@functools.lru_cache(maxsize=1)
+def _catalog_folder() -> Path | None:
+    """The folder of the catalog's modules on disk (as the package's spec names it when first asked)."""
+    spec = importlib.util.find_spec(CATALOG)
+    where = list(spec.submodule_search_locations or ()) if spec is not None else []
+    return Path(where[0]).resolve() if where else None
 
 
 class CatalogError(Exception):

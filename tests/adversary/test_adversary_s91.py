@@ -121,3 +121,35 @@ def test_the_cluster_client_is_sealed():
             "except stiefelsym.CatalogError as e:\n    print('refused:', e)\n")
     out = subprocess.run([sys.executable, "-c", code], cwd=H1, capture_output=True, text=True, timeout=600)
     assert "refused:" in out.stdout and "the engine was changed" in out.stdout, out.stdout + out.stderr
+
+
+# h4: the same review attacked again after the fixes above, eight more routes, each closed:
+# - W1, W2: a global of the catalog's module shadowing a builtin the function reads (zip), or the module's
+#   __builtins__ replaced: the record holds that the name is absent from the module and the module's builtins;
+# - W3 (a helper that computes a changed result while traced and puts the original back after) and W4-W8 (the
+#   import machinery during the catalog's fresh loading: a stand-in itertools in sys.modules, a folder on
+#   stiefelsym.__path__, a meta path finder, a wrapped importlib.import_module; an audit hook that applies @claim
+#   while the catalog loads, registering one's own claim as the catalog's): all from a claims file imported into the
+#   process, with its full powers.  Such a process relies on no reviewed reason any more (the seal is on): the CLI,
+#   stiefelsym.load and the pytest plugin import files in fresh interpreters only, and keep them.
+H4 = Path(__file__).parent / "s91" / "h4"
+
+
+@pytest.mark.parametrize("args", [["b_builtin_shadow.py", "exact", "3.2"], ["g_module_builtins.py", "exact"],
+                                  ["c_file_after_catalog.py", "exact"], ["g2_file_builtins.py", "exact"],
+                                  ["d_fresh_import_itertools.py", "exact"],
+                                  ["e_fresh_import.py", "evil_metapath_file.py", "exact"],
+                                  ["e_fresh_import.py", "evil_pkgpath_file.py", "exact"],
+                                  ["e_fresh_import.py", "evil_importmodule_file.py", "exact"],
+                                  ["f_audit_smuggle.py", "exact"]], ids=lambda a: "-".join(a[:2]))
+def test_a_changed_catalog_is_not_proved_under_its_review(args):
+    out = subprocess.run([sys.executable, *args], cwd=H4, capture_output=True, text=True, timeout=600)
+    lines = [x for x in out.stdout.splitlines() if " exact: " in x]
+    assert lines and all(" exact: fails" in x for x in lines), out.stdout + out.stderr
+
+
+def test_a_function_that_only_names_a_catalog_module_stays_the_file_s():
+    # h4 I1: a claim whose function's __module__ named a catalog module was dropped from its file, silently; only a
+    # function compiled from the catalog's folder is the catalog's
+    reg = stiefelsym.load(H4 / "evil_hide_file.py", sizes=[(3, 2)])
+    assert [c.id for c in reg] == ["visible-true", "hidden-false"]
