@@ -1174,8 +1174,8 @@ def _show_traced(c: Any, size: Any, full: bool = False) -> None:
     whole = ", whole" if full else ""
     click.echo(f"traced:      at {where}, read back from the claim's graph{whole}:"
                if where == "every size" or size is not None else
-               f"traced:      at {where} only (the claim's code reads the sizes: each size has a graph of its own, "
-               f"--size n,r shows another), read back from the claim's graph{whole}:")
+               f"traced:      at {where} only (the claim's code reads the sizes, so its graph may differ from one size "
+               f"to another: --size n,r shows another), read back from the claim's graph{whole}:")
     for name, text, _tex in traced:
         click.echo(f"  {name + ': ' if name else ''}{text}")
 

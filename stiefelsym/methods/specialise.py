@@ -273,7 +273,8 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
     res.verdict = "proved"
     res.checks = list(free.checks)
     where = ("its cofactor certificate, in this record, re-expanded by the independent checker" if per_r else
-             "the claim's record with no size, its cofactor certificate re-expanded by the independent checker")
+             "the claim's record with no size, its cofactor certificate re-expanded by the independent checker; a run "
+             "at chosen sizes has no such record: `stiefelsym verify ID --method free` makes it")
     res.reductions = [
         "the dimension-free proof, specialised: the claim's graph at this size is its graph with symbolic sizes"
         + ("" if family is None else f" on the family {family}")

@@ -79,7 +79,8 @@ def test_a_graph_rewritten_through_gc_is_shown_as_the_graph_proved(method):
     for (cid, _n, _r), rec in recs.items():
         (name, text, _tex), = rec["traced"]
         if cid == "c7g-nonzero":
-            assert text == "1 − 1" and rec["verdict"] in ("fails", "undecided"), (cid, rec["verdict"], text)
+            # (1 − 1 as traced: the read-back writes the numbers of a sum as one number)
+            assert text == "0" and rec["verdict"] in ("fails", "undecided"), (cid, rec["verdict"], text)
         else:      # the residual XXᵀ − I (false) or Ψ + Ψᵀ (true), rewritten as I − I: what is proved reads 0
             assert text == "0" and rec["verdict"] == "proved", (cid, rec["verdict"], text)
 
