@@ -14,8 +14,8 @@ K random points of T*V over GF(p), p = 2⁶¹ − 1, with K larger than the numb
 and dim (D ∩ N) = dim D + rank N − rank (D ∪ N), the ranks taken together with the constant
 function.  A rank found at random points is never above the rank of the functions, and falls below it
 only when a nonzero ρ × ρ minor of the values at the first ρ points vanishes (ρ the rank), which has
-probability at most ρd/p (Schwartz–Zippel, d the degree of the functions in the coordinates of the
-points).  The two ranks err in opposite directions (rank N too low lowers dim (D ∩ N), rank (D ∪ N) too
+probability at most ρd/p (Schwartz–Zippel, d the degree of the functions as polynomials in the parameters
+the points are drawn from).  The two ranks err in opposite directions (rank N too low lowers dim (D ∩ N), rank (D ∪ N) too
 low raises it), so each count is exact except with probability at most 2ρd/p.
 """
 from __future__ import annotations
@@ -80,18 +80,20 @@ class Family:
     max_a: int = 1
 
 
-NEUMANN_NAMED = "H_neum,0, ⟨Ψ,Ψ⟩, and the spectral invariants tr 𝓛(λ)ᵏ (k ≤ 4) of (LA2)"
+#: what the paper names for a Neumann flow of a given κ (H_neum,κ = H_neum,0 + κ/2⟨Ψ,Ψ⟩: with ⟨Ψ,Ψ⟩, the same span)
+NEUMANN_NAMED = "H_neum,{k}, ⟨Ψ,Ψ⟩, and the spectral invariants tr 𝓛(λ)ᵏ (k ≤ 4) of (LA2)"
+_SPANNED = " (with ⟨Ψ,Ψ⟩ they span H_neum,0, which the table uses)"
 
 
 def families() -> list[Family]:
     sec4, sec5 = _catalog("sec4_integrability"), _catalog("sec5_neumann")
     return [
         Family("neumann-kappa", "the Neumann flow (No), for every κ", "No", lambda s: sec5.flow_No(s, s.kappa),
-               neumann_named, NEUMANN_NAMED, max_a=2),
+               neumann_named, NEUMANN_NAMED.format(k="κ") + _SPANNED, max_a=2),
         Family("neumann-normal", "the Neumann flow of the normal metric (N0_XP2), κ = 0", "N0_XP2", sec5.flow_N0,
-               neumann_named, NEUMANN_NAMED, max_a=2),
+               neumann_named, NEUMANN_NAMED.format(k="0"), max_a=2),
         Family("neumann-euclidean", "the Neumann flow of the Euclidean metric (NE_XP), κ = −½", "NE_XP",
-               sec5.flow_NE, neumann_named, NEUMANN_NAMED, max_a=2),
+               sec5.flow_NE, neumann_named, NEUMANN_NAMED.format(k="−½") + _SPANNED, max_a=2),
         Family("manakov", "the Manakov flow (dot_XP3*), B = A²", "dot_XP3*", sec4.flow_XP3, manakov_named,
                "tr(λA + Φ)ᵏ of (man) (k ≤ 4), tr PᵀP, tr (PᵀP)², ⟨Ψ,Ψ⟩", max_a=2),
     ]
@@ -268,10 +270,11 @@ def neumann2_markdown(items: Sequence[Neumann2]) -> list[str]:
            "(perelomov), c_{k,j} = the coefficient of λʲ in tr 𝓛(λ)ᵏ, 𝓛(λ) = λΦ + XXᵀ − λ²A.  At an exact rational "
            "point of Ψ⁻¹(0) (XᵀP = 0) the differentials of all c_{k,j}, restricted to the symplectic leaf of "
            "(gl(n), Λ1) through Θ(X, P), have rank r(n − r); the table lists the first r(n − r) independent ones "
-           "in the order of k, then j.  The rank at a point bounds the generic rank from below.  From above: "
-           "functions in involution ((perelomov); the catalog checks the brackets for k ≤ 3, claim "
-           "neumann-spectral-invariants) have differentials spanning an isotropic subspace, so at most half the "
-           "dimension of the leaf of them are independent, r(n − r) on Ψ = 0 (T*G(n, r) has dimension 2r(n − r)).", "",
+           "in the order of k, then j.  A rank at an exact point shows that many of them independent there, so "
+           "on an open dense part of Ψ = 0 (a rank can only drop on a closed set), which is what the theorem "
+           "asserts.  More cannot be: functions in involution ((perelomov); the catalog checks the brackets for "
+           "k ≤ 3, claim neumann-spectral-invariants) have differentials spanning an isotropic subspace of the "
+           "leaf, of dimension at most r(n − r) on Ψ = 0 (T*G(n, r) has dimension 2r(n − r)).", "",
            "| (n, r) | r(n − r) | rank at the point | the integrals c_{k,j} (k, j) |", "| --- | ---: | ---: | --- |"]
     for it in items:
         n, r = it.size.n, it.size.r

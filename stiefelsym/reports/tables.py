@@ -1249,9 +1249,9 @@ def _notes_markdown() -> list[str]:
     return [
         "Notes on the disagreements:", "",
         "- *regular*: the remark before Lemma 2l (the generic orbit in Φ(T*V) is regular iff n ≤ 2r + 1); at "
-        "n = 2r + 2 both cases of Lemma 2l give the regular dimension, so the orbit is regular there (the Lemma's "
+        "n = 2r + 2 the second case of Lemma 2l, 2r(n − r − 1), equals the regular dimension, so the orbit is regular there (the Lemma's "
         "formula itself agrees everywhere).",
-        "- *inv. forms*: the proposition after Theorem ET (the SO(n)×SO(r)-invariant quadratic forms on T*_{X₀}V "
+        "- *inv. forms*: Proposition 4.6 (the SO(n)×SO(r)-invariant quadratic forms on T*_{X₀}V "
         "are spanned by tr(PᵀP), tr((XᵀP)²)); at r = 4 the Pfaffian of P₁ is a further invariant form for every "
         "n ≥ 4, at n − r = r = 2 det P₂, at (n, r) = (4, 3) the pairing of the axial vector of P₁ with P₂.",
         "- *N > l*: §8 says N = r(n−r) + r(r−1)/2 exceeds half the dimension (dimension) of a generic leaf, so "
