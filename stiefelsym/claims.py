@@ -553,6 +553,7 @@ def _reach(func: Callable) -> tuple:
 def _intact(slots: tuple) -> bool:
     """Whether every slot of :func:`_reach` still holds what it held."""
     from stiefelsym.ir.seal import _code_of, _content
+    now: Any
     for holder, key, ident, contents in slots:
         if key == "code":
             now = _code_of(holder)
