@@ -153,3 +153,23 @@ def test_a_function_that_only_names_a_catalog_module_stays_the_file_s():
     # function compiled from the catalog's folder is the catalog's
     reg = stiefelsym.load(H4 / "evil_hide_file.py", sizes=[(3, 2)])
     assert [c.id for c in reg] == ["visible-true", "hidden-false"]
+
+
+OWN = Path(__file__).parent / "s91" / "own"
+
+
+def test_the_pencil_isomorphism_check_rejects_its_mutants():
+    # the new correction of pencil-gl-isomorphism checks L Λ L = μ⟨ψ(·), [·,·]⟩; μ² in front, or L = μ on Sym(n)
+    # instead of so(n), must fail (negative controls of the identity the correction rests on)
+    from adversary_replay import verdicts_by_size
+    for method in ("exact", "modular"):
+        got = verdicts_by_size(OWN / "pencil_gl_mutants.py", "--size", "3,2", "--method", method)
+        assert got[("pg-true", 3, 2)] in ("proved", "checked"), got
+        assert got[("pg-scale-c", 3, 2)] == "fails" and got[("pg-L-swapped", 3, 2)] == "fails", got
+
+
+def test_an_empty_matrix_has_rank_zero_and_no_other():
+    from adversary_replay import verdicts_by_size
+    for method in ("exact", "modular", "rational"):
+        got = verdicts_by_size(OWN / "empty_rank.py", "--size", "3,2", "--method", method)
+        assert got == {("empty-rank-false", 3, 2): "fails", ("empty-rank-true", 3, 2): "proved"}, got
