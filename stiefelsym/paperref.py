@@ -231,15 +231,22 @@ def _label_patterns() -> tuple[re.Pattern, re.Pattern, re.Pattern, re.Pattern] |
             re.compile(alt.join((r"(?<![\w\-])(", r")(?![\w*()\-])"))))
 
 
-def readable(text: str, statement: bool = False) -> str:
+#: names the paper prints as names, not as numbers, although a ``\label`` of the same key stands beside them: the
+#: conditions (A1), (A2) in the proof of Lemma 6.3 (the label A2 is the equation (11) §6 that states the second).
+#: ``readable(..., keep=CONDITION_NAMES)`` leaves "(A2)" as printed.
+CONDITION_NAMES = ("A1", "A2")
+
+
+def readable(text: str, statement: bool = False, keep: tuple[str, ...] = ()) -> str:
     """``text`` with the paper's label keys replaced by the numbers the paper prints: "(dot_XP3*)" becomes
     "(5) §4" ("(5) of Section 4" in a ``statement``, which is LaTeX), "Theorem man-dual" becomes
     "Theorem 4.4", "Theorems DUAL and man-dual" "Theorems 8.1 and 4.4", "(DUAL)" becomes "(Theorem 8.1)".  A label the table does not know, or of an unnumbered
-    display or a section, is left as it is: the keys stay in the headings, as the catalog's names."""
+    display or a section, is left as it is: the keys stay in the headings, as the catalog's names.  A key in
+    ``keep`` (such as :data:`CONDITION_NAMES`, names the paper itself prints) is left as it is too."""
     pats = _label_patterns()
     if pats is None or not text:
         return text
-    t = table()
+    t = {k: v for k, v in table().items() if k not in keep}
     paren, named, plural, label = pats
 
     def ref(m: re.Match) -> str:

@@ -59,6 +59,15 @@ def test_prose_cites_the_printed_numbers():
     assert readable("Theorems DUAL and man-dualx") == "Theorems DUAL and man-dualx"
 
 
+def test_the_conditions_the_paper_names_keep_their_names():
+    """(A1), (A2) are the names the proof of Lemma 6.3 gives its two conditions; the label A2 is also the
+    equation (11) §6 that states the second.  With the keep-list they stay as printed, while (L5), a label of an
+    equation the paper prints as (16), becomes its number."""
+    from stiefelsym.paperref import CONDITION_NAMES, readable
+    assert readable("(A2) and (L5)") == "(11) §6 and (16) §6"
+    assert readable("(A1), (A2) and (L5)", keep=CONDITION_NAMES) == "(A1), (A2) and (16) §6"
+
+
 def test_the_reports_keep_the_keys_in_their_records():
     """Only the rendering reads the numbers: the records keep the claims' own words."""
     from stiefelsym.reports.report import readable_results

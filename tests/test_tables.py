@@ -220,3 +220,16 @@ def test_the_columns_cite_the_places_of_the_paper_they_compute():
     assert "(LA4)" not in tables.QUANTITIES["N_rank"][1] and "(2) §8" in tables.QUANTITIES["N_rank"][1]
     assert (labels["LA4"]["number"], labels["LA4"]["section"]) == ("3", "8")
     assert any(title.startswith("§4, §7, §8: invariant metrics") for title, _ in tables.GROUPS)
+
+
+def test_the_prose_prints_the_papers_numbers_not_its_label_keys(small):
+    """The tables' words cite the paper by its printed numbers (Lemma 2.5, (16), (17) §6, Theorem 7.1), and keep
+    the names of the conditions (A1), (A2) of the proof of Lemma 6.3; the rows of numbers are untouched."""
+    md = tables.render_markdown(small, {})
+    prose = "\n".join(line for line in md.splitlines() if not line.startswith("| ("))
+    for key in ("Lemma 2l", "LEMA1", "LEMA2", "(dim_fol)", "(dimension)", "NEUMANN2", "(L5)", "(L6)", "KER"):
+        assert key not in prose, key
+    assert "Lemma 2.5" in prose and "(16), (17) §6" in prose and "Theorem 7.1" in prose
+    assert "**(A2)** (A2):" in md and "(A1) t=−1" in md
+    tex = tables.render_latex(small, {})
+    assert "LEMA2" not in tex and "(16), (17) c." in tex

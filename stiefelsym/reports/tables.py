@@ -505,17 +505,17 @@ QUANTITIES = {
     "delta0_complete": ("bols-jov", "rank d(Φ,Ψ,PᵀP) − rank{ , } (isotropic kernel); = δ₀ iff complete"),
     "delta": ("man", "2 dim V − rank d(Ψ, PᵀP, tr(Φ+λA)^k); printed r(n−r) for n ≥ 2r"),
     "delta_complete": ("man", "rank d(F) − rank{F, F} for the Manakov integrals; = δ iff complete"),
-    "leaf": ("dimension", "generic rank of Λ1 at Θ(X,P)  (LEMA1, L1, L2)"),
+    "leaf": ("dimension", "generic rank of Λ1 at Θ(X,P) (Lemma LEMA1; (L1), (L2))"),
     "leaf_singular": ("dimension", "2l < n² − n (the leaves in Θ(T*V) are singular): 1 if the computed 2l is below n² − n"),
     "L5L6": ("L6", "dim of the solutions of (L5), (L6) as printed in so(r)_{h1} ⊕ Sym(r); printed: r"),
     "L5L6_corrected": ("L6", "the same with (L6) read as [A1, η1] ⟂ so(r)_{h1}; printed: r"),
     "leaf_pushforward": ("dimension", "generic rank of dΘ·ω⁻¹·dΘᵀ (Θ is Poisson: the same leaf)"),
     "complete_F": ("LEMA2", "generic rank of (d𝓕)·Λ1 (independent Casimirs on the leaf); printed: l"),
-    "A1": ("LEMA2", "generic rank of Λ_{1,−1} at Θ(X,P); printed: n² − n  (A1, LAMBDA, L3, L4)"),
+    "A1": ("LEMA2", "generic rank of Λ_{1,−1} at Θ(X,P); printed: n² − n (the condition (A1); (LAMBDA), (L3), (L4))"),
     "A1_t": ("LEMA2", "generic rank of Λ_{1,t} (t a variable) and of Λ2; printed: n² − n"),
     "KER": ("KER", "dim ker Λ1 at h = diag(h₁, 0), with the printed kernel checked inside"),
-    "A2": ("A2", "dim of ker Λ_{1,−1} restricted to ker Λ1 at h = diag(h₁, 0), A diagonal  (L5–L8)"),
-    "torus": ("dim_fol", "2 dim V − rank d(Θ*𝓕, Ψ)  (NEUMANN)"),
+    "A2": ("A2", "dim of ker Λ_{1,−1} restricted to ker Λ1 at h = diag(h₁, 0), A diagonal (the condition (A2); (L5)–(L8))"),
+    "torus": ("dim_fol", "2 dim V − rank d(Θ*𝓕, Ψ) (NEUMANN)"),
     "torus_complete": ("NEUMANN", "rank d(Θ*𝓕, Ψ) − rank{ , }; = torus iff complete"),
     "NEUMANN2": ("NEUMANN2", "generic rank of (d𝓕)·Λ1 at Ψ = 0; printed r(n−r) = dim G(n,r)"),
     "N": ("2r-integrals", "Σ_l (deg I_2l) = Σ_{l=1}^r (n − l) = dim V"),
@@ -1130,7 +1130,7 @@ def compute_tables(n_max: int = 9, *, seed: int = 0, progress: Callable[[int, in
 GROUPS = (
     ("§2–§4: the variety, SO(n)-invariants, orbits and the tori of the geodesic flows",
      ("dimV", "ddim", "ddim_inv", "2l", "regular", "chain", "delta0", "delta0_complete", "delta", "delta_complete")),
-    ("§6: the pencil Λ1, Λ2 (Lemmas LEMA1, LEMA2) and the tori of the Neumann systems",
+    ("§6: the pencil Λ1, Λ2 of Lemmas LEMA1, LEMA2, and the tori of the Neumann systems",
      ("leaf", "leaf_singular", "leaf_pushforward", "complete_F", "A1", "A1_t", "KER", "A2", "L5L6", "L5L6_corrected",
       "torus", "torus_complete")),
     ("§4, §7, §8: invariant metrics, Grassmannians, the count N",
@@ -1143,13 +1143,13 @@ HEADINGS = {
     "2l": ("2l", r"$2l$"), "regular": ("regular", r"reg."), "chain": ("ddim 𝔄", r"ddim$\,\mathfrak A$"),
     "delta0": ("δ₀", r"$\delta_0$"), "delta0_complete": ("δ₀ (compl.)", r"$\delta_0$ c."),
     "delta": ("δ", r"$\delta$"), "delta_complete": ("δ (compl.)", r"$\delta$ c."),
-    "leaf": ("2l (dimension)", r"$2l$ (dim.)"), "leaf_singular": ("2l < n²−n", r"$2l<n^2-n$"),
-    "L5L6": ("(L5),(L6)", r"(L5,6)"), "L5L6_corrected": ("(L5),(L6) corr.", r"(L5,6) c."),
+    "leaf": ("2l by (dimension)", r"$2l$ (dimension)"), "leaf_singular": ("2l < n²−n", r"$2l<n^2-n$"),
+    "L5L6": ("(L5), (L6)", r"(L5), (L6)"), "L5L6_corrected": ("(L5), (L6) corr.", r"(L5), (L6) c."),
     "leaf_pushforward": ("2l via Θ", r"$2l$ via $\Theta$"),
-    "complete_F": ("l (LEMA2)", r"$l$ (LEMA2)"), "A1": ("(A1) t=−1", r"(A1) $t{=}{-1}$"),
-    "A1_t": ("(A1) any t", r"(A1) $t$"), "KER": ("KER", r"KER"), "A2": ("(A2)", r"(A2)"),
+    "complete_F": ("l by Lemma LEMA2", r"$l$ (LEMA2)"), "A1": ("(A1) t=−1", r"(A1) $t{=}{-1}$"),
+    "A1_t": ("(A1) any t", r"(A1) $t$"), "KER": ("(KER)", r"(KER)"), "A2": ("(A2)", r"(A2)"),
     "torus": ("torus", r"torus"), "torus_complete": ("torus (compl.)", r"torus c."),
-    "NEUMANN2": ("NEUMANN2", r"NEU2"), "N": ("N", r"$N$"), "N_rank": ("N indep.", r"$N$ indep."),
+    "NEUMANN2": ("Theorem NEUMANN2", r"(NEUMANN2)"), "N": ("N", r"$N$"), "N_rank": ("N indep.", r"$N$ indep."),
     "N_dependent": ("some dependent", r"dep."), "N_vs_l": ("N > l", r"$N>l$"),
     "invariant_forms": ("inv. forms", r"inv.\ forms"),
 }
@@ -1193,6 +1193,35 @@ def tables_json(T: Tables, verdicts: dict[str, Any]) -> dict:
     }
 
 
+#: two equations of one section in a row: "(16) §6, (17) §6" is printed "(16), (17) §6"
+_SAME_SECTION = re.compile(r"\((\d+)\) §(\d+)(, |–)\((\d+)\) §\2(?!\d)")
+
+
+def _readable(text: str) -> str:
+    """The prose of the tables with the paper's printed numbers for its label keys ("Lemma LEMA2" is "Lemma 6.3",
+    "(L5)" is "(16) §6", "(dim_fol)" is "(1) §6"), the conditions (A1), (A2) of the proof of Lemma 6.3 kept as the
+    paper names them (:data:`stiefelsym.paperref.CONDITION_NAMES`); equations of one section in a row share their
+    "§": "(16), (17) §6", "(16)–(19) §6"."""
+    from stiefelsym.paperref import CONDITION_NAMES, readable
+    out = readable(text, keep=CONDITION_NAMES)
+    while True:
+        new = _SAME_SECTION.sub(r"(\1)\3(\4) §\2", out)
+        if new == out:
+            return out
+        out = new
+
+
+def _tex_readable(text: str) -> str:
+    """:func:`_readable` for LaTeX that is already set: "§" as ``\\S``."""
+    return _readable(text).replace("§", r"\ensuremath{\S}")
+
+
+def _tex_heading(key: str) -> str:
+    """A column's heading in the PDF: the paper's numbers for its label keys, without their section (the table's
+    caption names it): "(16), (17)", "(Theorem 7.1)"."""
+    return re.sub(r" §\d+", "", _readable(HEADINGS[key][1]))
+
+
 def _row_lookup(T: Tables) -> dict[tuple[int, int], dict[str, Row]]:
     return {size: {row.key: row for row in rows} for size, rows in T.rows.items()}
 
@@ -1207,7 +1236,7 @@ def render_markdown(T: Tables, verdicts: dict[str, Any]) -> str:
            "Each cell is the computed value at (n, r); where it differs from the paper's formula the cell reads "
            "**printed ≠ computed**.  A value without a mark is *proved* on both sides: a rank modulo a prime at an "
            "integer point from below, and from above exact kernel vectors (checked over ℤ at the point for the "
-           "statements at one point: KER, (A2), (L5)–(L6), invariant forms; checked identically over ℤ[P] for the "
+           "statements at one point: (KER), (A2), (L5)–(L6), invariant forms; checked identically over ℤ[P] for the "
            "generic leaf dimension (dimension) when r ≤ 6: the polynomial solutions of (L1), (L2); the odd powers "
            "of Φ for a regular 2l), or a count.  A value marked * is *checked*: the lower side is "
            "proved (an exact rank at an integer point), the upper side holds unless random points hit the zero set "
@@ -1223,7 +1252,7 @@ def render_markdown(T: Tables, verdicts: dict[str, Any]) -> str:
             cells = [_cell(look[size].get(k)) for k in keys]
             out.append(f"| ({size[0]},{size[1]}) | " + " | ".join(cells) + " |")
         out += ["", "What each column computes:", ""]
-        out += [f"- **{HEADINGS[k][0]}** ({QUANTITIES[k][0]}): {QUANTITIES[k][1]}" for k in keys]
+        out += [f"- **{_readable(HEADINGS[k][0])}** ({QUANTITIES[k][0]}): {QUANTITIES[k][1]}" for k in keys]
         out.append("")
     out += ["## Disagreements between the printed formulas and the computation", ""]
     checks = T.formula_check()
@@ -1234,13 +1263,15 @@ def render_markdown(T: Tables, verdicts: dict[str, Any]) -> str:
             continue
         verdict = ("the closed form matches the computed sizes exactly" if c["matches_formula"] else
                    f"the closed form does NOT match at {_sizes_text(c['mismatch'])}")
-        out += [f"- **{HEADINGS[key][0]}** ({QUANTITIES[key][0]}): disagrees exactly when {c['set']}; "
+        out += [f"- **{_readable(HEADINGS[key][0])}** ({QUANTITIES[key][0]}): disagrees exactly when {c['set']}; "
                 f"{verdict} (checked at all {c['checked_sizes']} computed sizes). "
                 f"Sizes: {_sizes_text(c['sizes']) or 'none'}."]
     out += ["", *_notes_markdown(), ""]
     und = T.undecided()
     if und:
         out += ["Undecided (the bounds did not meet): " + "; ".join(f"{k} at {_sizes_text(v)}" for k, v in und.items()), ""]
+    # the prose (not the rows of numbers) with the paper's printed numbers for its label keys
+    out = [line if re.match(r"\| \(\d", line) else _readable(line) for line in out]
     out += verdict_markdown(verdicts)
     return "\n".join(out) + "\n"
 
@@ -1263,11 +1294,11 @@ def _notes_markdown() -> list[str]:
         "for r ≤ 2: there all N integrals are independent (computed), and some are dependent exactly for r ≥ 3.  "
         "Wherever computed, the rank equals the torus dimension (dim_fol) = l + [r/2].",
         "- *2l < n²−n*: (dimension) states the strict inequality; at (1,1) and (2,1) 2l = n² − n (0 and 2).",
-        "- *(L5),(L6)*: the proof of Lemma LEMA2 says the solutions of (L5), (L6) form an r-dimensional space.  "
+        "- *(L5), (L6)*: the proof of Lemma LEMA2 says the solutions of (L5), (L6) form an r-dimensional space.  "
         "With (L6) as printed, [A₁, η₁] ∈ so(r,ℂ)^⊥ = Sym(r) forces the skew matrix [A₁, η₁] to vanish, and the "
         "solutions are 2-dimensional for every r ≥ 3.  Pairing with the Cartan subalgebra so(r)_{h₁} (the part of "
         "ker Λ1 it is paired with) gives [A₁, η₁] ⟂ so(r,ℂ)_{h₁}: then the dimension is r at every size (column "
-        "*(L5),(L6) corr.*), and (A2) holds (column *(A2)*, computed without (L5)–(L8)).",
+        "*(L5), (L6) corr.*), and (A2) holds (column *(A2)*, computed without (L5)–(L8)).",
     ]
 
 
@@ -1398,8 +1429,8 @@ def render_latex(T: Tables, verdicts: dict[str, Any]) -> str:
     for title, keys in GROUPS:
         cols = "l" + "r" * len(keys)
         out += [r"{\footnotesize\setlength{\tabcolsep}{3pt}", r"\begin{longtable}{" + cols + "}",
-                r"\caption{" + _tex_title(title) + r"}\\", r"\toprule",
-                "$(n,r)$ & " + " & ".join(HEADINGS[k][1] for k in keys) + r" \\", r"\midrule", r"\endhead"]
+                r"\caption{" + _tex_title(_readable(title)) + r"}\\", r"\toprule",
+                "$(n,r)$ & " + " & ".join(_tex_heading(k) for k in keys) + r" \\", r"\midrule", r"\endhead"]
         for size in sizes:
             out.append(f"$({size[0]},{size[1]})$ & " + " & ".join(_cell(look[size].get(k), True) for k in keys) + r" \\")
         out += [r"\bottomrule", r"\end{longtable}}", ""]
@@ -1412,7 +1443,9 @@ def render_latex(T: Tables, verdicts: dict[str, Any]) -> str:
         any_item = True
         verdict = ("the closed form matches every computed size" if c["matches_formula"] else
                    "the closed form does not match at " + _tex(_sizes_text(c["mismatch"])))
-        out.append(rf"\item {HEADINGS[key][1]} ({_tex(QUANTITIES[key][0])}): exactly when {_tex(c['set'])}; "
+        ref = _tex(_readable(f"({QUANTITIES[key][0]})")).replace("§", r"\ensuremath{\S}")
+        out.append(rf"\item {_tex_readable(HEADINGS[key][1])} {ref}: "
+                   rf"exactly when {_tex(c['set'])}; "
                    rf"{verdict} ({c['checked_sizes']} sizes).")
     if not any_item:
         out.append(r"\item None.")
