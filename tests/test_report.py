@@ -112,7 +112,7 @@ def test_markdown_reproduce_and_vocabulary(results):
 def test_markdown_tables_hold_size_method_verdict_time_bound_seed(results):
     md = render_markdown(results)
     assert "| (4,2) | modular | checked | 0.25 s | 2 independent points over GF(2^61-1); " \
-           "numerator degree \\<= 39 | 0 | 2.9e-34 |" in md
+           "numerator degree \\<= 39 | 0 | 2.9·10⁻³⁴ |" in md
     assert "| all n, r | free | proved | 0.25 s |" in md
     assert "| (2,2) | exact | **error** (UNEXPECTED) |" in md
     assert "ZeroDivisionError: 1/0" in md
@@ -146,7 +146,7 @@ def test_errata_lists_failing_claim_with_witness_and_corrections(results):
     assert "- rerun: `stiefelsym verify neumann-lax --size 3,1 --method rational --seed 0`" in errata
     assert "Candidate corrections: the claim as printed was run at 2 sizes (3,1), (4,2)" in errata
     assert r"| sign of $\lambda A$ flipped | **verified at the computed sizes** | verified at all 2 computed sizes by rational " \
-           "(p ≤ 2.9e-34) |" in errata
+           "(p ≤ 2.9·10⁻³⁴) |" in errata
     assert "| M transposed | rejected | fails at (3,1) by rational |" in errata
     for cid in CLAIMS[:-1]:  # only the failing claim is an erratum
         assert f"### `{cid}`" not in errata
@@ -337,7 +337,7 @@ def test_correction_verified_at_every_planned_size_is_said_so():
 def test_correction_verified_at_one_size_of_two_is_not_verified():
     status, phrases = correction_summary([_corr(3, 1, "rational", "checked")], [(3, 1), (4, 2)])
     assert status == "not verified"
-    assert "passes at (3,1) by rational (p ≤ 2.9e-34)" in phrases
+    assert "passes at (3,1) by rational (p ≤ 2.9·10⁻³⁴)" in phrases
     assert "not verified at (4,2)" in phrases
 
 
@@ -617,11 +617,16 @@ def test_the_headline_and_the_summary_table_tell_proofs_from_random_checks():
     text, _ = headline(claims)
     assert ("3 hold as printed at every size computed (2 proved at every size computed; 1 of them proved for every "
             "size at once: 0 for every n and r, and, stated at particular r, for every n: 1 at r = n; 1 rests at some "
-            "size on a check at random points alone, no method proving it there, with a false-pass probability of "
-            "at most 2.5·10⁻³¹ per check)") in text
+            "size on a check at random points (false-pass probability at most 2.5·10⁻³¹ per check) alone, no method "
+            "proving it there)") in text
     counts = section_counts(claims)
     assert (counts["proved for all n, r"], counts["proved for every n at one r"], counts["hold at every size"],
             counts["proved at every size"]) == (0, 1, 3, 2)
+    # a numerical check has no false-pass probability: the bound is said of the randomized checks only
+    text, _ = headline(group_by_claim(rs + [result("d", 3, 1, "float", "numeric")]))
+    assert ("2 rest at some size on a check at random points (false-pass probability at most 2.5·10⁻³¹ per check) "
+            "or numerically (within a floating-point error bound; no probability attaches to such a check) alone, "
+            "no method proving them there)") in text
 
 
 def test_the_report_of_a_claims_file_counts_its_statements_not_the_papers():
@@ -1175,3 +1180,14 @@ def test_the_heading_of_an_erratum_leads_with_the_place_of_its_statement():
     assert "### `metrics` in Proposition 4.6 and its proof (involves: " in md
     assert re.search(r"^### `prep` \S", md, re.M) and "### `prep` in " not in md
     assert r"\subsection*{\texttt{metrics} in Proposition 4.6 and its proof (involves: " in tex
+
+
+def test_a_rank_of_zero_is_not_given_a_lower_bound_as_evidence():
+    """"rank 0 at a point (rank >= 0 over the function field)" is true of every matrix: the report says there is no
+    lower bound instead, and keeps the lower bound of a positive rank."""
+    from stiefelsym.reports.report import engine_words
+    zero = ("2l: rank 0 at an exact rational point (rank >= 0 over the function field) and 1 kernel vector of the "
+            "claim, so rank <= 1 - 1 = 0 over the function field")
+    assert engine_words(zero).startswith("2l: no lower bound (none is needed: no rank is below 0) and 1 kernel vector")
+    two = "rank 2 at an exact rational point (rank >= 2 over the function field) and 1 kernel vector"
+    assert "rank ≥ 2" in __import__("stiefelsym.latex", fromlist=["unicode_words"]).unicode_words(engine_words(two))

@@ -464,9 +464,10 @@ def format_seconds(s: float | None) -> str:
 
 
 def format_bound(p: float | None) -> str:
+    """A false-pass probability as the whole report writes one: m·10⁻ᵏ (:func:`_power_of_ten`), "0", "–" for none."""
     if p is None:
         return "–"
-    return "0" if p == 0 else f"{p:.1e}"
+    return "0" if p == 0 else _power_of_ten(p)
 
 
 def short(text: Any, width: int = 90) -> str:
@@ -565,6 +566,9 @@ _ENGINE_IDIOMS = (
     (re.compile(r"(?<![\w^])R\^(n|r)\b"), r"ℝ^\1"),                          # the spaces ℝⁿ, ℝʳ
     (re.compile(r"\b(T\*?)?([VW])\(([nr]|\d+), ([nr]|\d+)\)"), r"\1\2_{\3,\4}"),  # V_{n,r}, T*V_{n,n}, TW_{n,r}
     (re.compile(r"(?<=[\w)\]]) - (?=[\w(\[])"), " − "),                         # a minus sign: n − r, I − S
+    # a rank of 0 needs no lower bound: "rank ≥ 0" is no evidence, and is not printed as such
+    (re.compile(r"\brank 0 at an exact rational point \(rank >= 0 over the function field\)(?= and|;)"),
+     "no lower bound (none is needed: no rank is below 0)"),
 )
 
 
@@ -1721,13 +1725,17 @@ def _proved_words(claims: list[ClaimResults], holds: int, proved: int, at_once: 
              for r in c.printed if r.n is not None and r.verdict in PASSING
              and not any(o.verdict == "proved" and (o.n, o.r) == (r.n, r.r) for o in c.printed)]
     bounds = [r.false_pass_bound for r in sizes if r.verdict == "checked" and r.false_pass_bound is not None]
-    kinds = ("at random points" if not any(r.verdict == "numeric" for r in sizes) else
-             "at random points or numerically (within a floating-point error bound)"
-             if any(r.verdict == "checked" for r in sizes) else "numerically (within a floating-point error bound)")
-    bound = f", with a false-pass probability of at most {_power_of_ten(max(bounds))} per check" if bounds else ""
+    numeric = any(r.verdict == "numeric" for r in sizes)
+    # a randomized exact check has a false-pass probability; a numerical one has none (it holds within an error
+    # bound of floating-point arithmetic), and is not said to have one
+    randomized = ("at random points" + (f" (false-pass probability at most {_power_of_ten(max(bounds))} per check)"
+                                        if bounds else ""))
+    numerical = "numerically (within a floating-point error bound; no probability attaches to such a check)"
+    kinds = (randomized if not numeric else f"{randomized} or {numerical}"
+             if any(r.verdict == "checked" for r in sizes) else numerical)
     return (f" ({proved} proved at every size computed; {at_once}; " if proved else " (none proved at every size computed: ")\
         + (f"{rest} {'rests' if rest == 1 else 'rest'} at some size on a check {kinds} alone, no method proving "
-           f"{'it' if rest == 1 else 'them'} there{bound})")
+           f"{'it' if rest == 1 else 'them'} there)")
 
 
 def _power_of_ten(p: float) -> str:

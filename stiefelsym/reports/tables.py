@@ -1175,6 +1175,12 @@ def _cell(row: Row | None, latex: bool = False) -> str:
     return f"{val}{mark}"
 
 
+def _power_of_ten(p: float) -> str:
+    """A probability as the reports write one: m·10⁻ᵏ (Unicode), "0" for none."""
+    from stiefelsym.reports.report import format_bound
+    return format_bound(p)
+
+
 def _sizes_text(sizes: list[tuple[int, int]]) -> str:
     return ", ".join(f"({n},{r})" for n, r in sizes)
 
@@ -1241,7 +1247,7 @@ def render_markdown(T: Tables, verdicts: dict[str, Any]) -> str:
            "of Φ for a regular 2l), or a count.  A value marked * is *checked*: the lower side is "
            "proved (an exact rank at an integer point), the upper side holds unless random points hit the zero set "
            "of a nonzero minor (Schwartz–Zippel) — the false-pass probability of every checked value in these "
-           f"tables is at most {maxp:.1e}.  A value in parentheses has no printed counterpart at that size.  "
+           f"tables is at most {_power_of_ten(maxp)}.  A value in parentheses has no printed counterpart at that size.  "
            f"Computed with seed {T.seed} (`stiefelsym tables --seed {T.seed}` reproduces every number).  "
            + (f"For {T.n_max} < n ≤ {ext} the columns of completeness checks (Poisson matrices of the integrals) "
               "are left empty." if ext else ""), ""]
