@@ -397,6 +397,27 @@ def test_rank_and_count_details_are_shown_from_the_most_rigorous_method():
     assert r"regular, (4,1) exact: \textbf{mismatch}. the generic orbit is regular (1) or singular (0)" in tex
 
 
+def test_sizes_at_which_a_check_says_the_same_thing_share_a_row():
+    """One row per (check, method, outcome, detail), naming its sizes; a detail that differs keeps its own row."""
+    from stiefelsym.reports.report import grouped_dimension_checks
+    same = [CheckOutcome("rank ad_Phi", "rank", "rank 0 at an exact rational point (rank >= 0 over the function "
+                                                "field); so rank <= 0 (paper: 0)")]
+    rs = [result("orbit", n, r, "exact", "proved", section="2", checks=same) for n, r in ((2, 1), (2, 2))] + \
+         [result("orbit", 3, 1, "exact", "proved", section="2",
+                 checks=[CheckOutcome("rank ad_Phi", "rank", "rank 2 (paper: 2)")])]
+    rows = grouped_dimension_checks(group_by_claim(rs)[0])
+    assert [(name, sizes) for name, sizes, *_ in rows] == [("rank ad_Phi", "(2,1), (2,2)"), ("rank ad_Phi", "(3,1)")]
+    md = render_markdown(rs)
+    assert "| rank ad\\_Phi | (2,1), (2,2) | exact | as printed | no lower bound (none is needed: no rank is below 0)" in md
+
+
+def test_a_scalar_times_itself_is_read_back_as_a_power():
+    from stiefelsym.reports.report import traced_words
+    assert traced_words("d/dt(λΦ + XXᵀ − λλA) − [Φ − λA, λΦ + XXᵀ − λλA]") == \
+        "d/dt(λΦ + XXᵀ − λ²A) − [Φ − λA, λΦ + XXᵀ − λ²A]"
+    assert traced_words("tr(μμμA) + λ₁λ₁ + λλᵀ") == "tr(μ³A) + λ₁λ₁ + λλᵀ"
+
+
 def test_a_meaning_carried_by_the_record_is_shown_in_front():
     r = result("orbit", 4, 1, "exact", "proved", section="2",
                checks=[CheckOutcome("rank ad_Phi", "rank", "rank ... = 5 (paper: 5)")])

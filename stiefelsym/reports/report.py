@@ -836,6 +836,24 @@ def dimension_checks(c: "ClaimResults") -> list[tuple[str, str, str, str, str]]:
     return out
 
 
+def grouped_dimension_checks(c: "ClaimResults") -> list[tuple[str, str, str, str, str]]:
+    """:func:`dimension_checks` with the sizes at which one check says the same thing (the same method, outcome and
+    detail) in one row: (check, sizes, method, status, detail), in the order of each group's first size."""
+    groups: dict[tuple[str, str, str, str], list[str]] = {}
+    for name, size, m, st, detail in dimension_checks(c):
+        groups.setdefault((name, m, st, detail), []).append(size)
+    return [(name, ", ".join(sizes), m, st, detail) for (name, m, st, detail), sizes in groups.items()]
+
+
+_REPEATED_SCALAR = re.compile(r"(?<![A-Za-zα-ωΑ-Ω])([λμνκ])(\1+)(?![₀-₉ᵀ⁻¹²³⁴⁵⁶⁷⁸⁹′'_])")
+_SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def traced_words(text: str) -> str:
+    """A formula as traced, as a reader writes it: a scalar multiplied by itself is a power ("λλA" is "λ²A")."""
+    return _REPEATED_SCALAR.sub(lambda m: m.group(1) + str(1 + len(m.group(2))).translate(_SUPERSCRIPTS), text)
+
+
 # --------------------------------------------------------------------------- terminal
 
 def render_summary(results: Sequence[Result]) -> str:
@@ -1172,10 +1190,11 @@ def _md_claim(c: ClaimResults) -> list[str]:
     out += [f"Kind: {c.kind}, {_md_escape(kind_words(c))}.", ""]
     if c.printed:
         out += _md_results(c.printed)
-    dims = dimension_checks(c)
+    dims = grouped_dimension_checks(c)
     if dims:
-        out += ["Rank and count statements (at each size, from the most rigorous method that ran):", ""]
-        out += _md_table(["check", "size (n,r)", "method", "outcome", "what was computed"],
+        out += ["Rank and count statements (at each size, from the most rigorous method that ran; the sizes at "
+                "which a check says the same thing share a row):", ""]
+        out += _md_table(["check", "sizes (n,r)", "method", "outcome", "what was computed"],
                          [[_md_cell(name), _md_cell(size), m, st if st == "as printed" else f"**{st}**",
                            _md_cell(unicode_words(engine_words(detail)))] for name, size, m, st, detail in dims], "lllll")
     how = c.how_obtained()
@@ -1185,7 +1204,8 @@ def _md_claim(c: ClaimResults) -> list[str]:
     where, traced, graphs = c.traced()
     if traced:
         out += [f"{_md_escape(traced_intro(where, graphs, c.expect, c.traced_sizes()))}:", ""]
-        out += [f"- {_md_escape(name) + ': ' if name else ''}{_md_escape(text)}" for name, text, _tex in traced] + [""]
+        out += [f"- {_md_escape(name) + ': ' if name else ''}{_md_escape(traced_words(text))}"
+                for name, text, _tex in traced] + [""]
     if any(r.derivation and r.verdict == "proved" for r in c.printed):
         out += ["The dimension-free derivation (residual, rules applied, normal form) is in "
                 "`verification-runs.tex`.", ""]
@@ -2325,9 +2345,10 @@ def _tex_claim(c: ClaimResults) -> list[str]:
     out += [tex_escape(f"Kind: {c.kind}, {kind_words(c)}."), ""]
     if c.printed:
         out += _tex_results(c.printed)
-    dims = dimension_checks(c)
+    dims = grouped_dimension_checks(c)
     if dims:
-        out += [tex_escape("Rank and count statements (at each size, from the most rigorous method that ran):")]
+        out += [tex_escape("Rank and count statements (at each size, from the most rigorous method that ran; the "
+                           "sizes at which a check says the same thing share an item):")]
         out += _tex_items([tex_escape(f"{name}, {size} {m}: ")
                            + (st if st == "as printed" else rf"\textbf{{{st}}}")
                            + (". " + tex_words(engine_words(short(detail, 400))) if detail else "")
