@@ -1212,3 +1212,16 @@ def test_a_rank_of_zero_is_not_given_a_lower_bound_as_evidence():
     assert engine_words(zero).startswith("2l: no lower bound (none is needed: no rank is below 0) and 1 kernel vector")
     two = "rank 2 at an exact rational point (rank >= 2 over the function field) and 1 kernel vector"
     assert "rank ≥ 2" in __import__("stiefelsym.latex", fromlist=["unicode_words"]).unicode_words(engine_words(two))
+
+
+def test_an_encoding_of_words_of_the_paper_is_not_headed_as_printed():
+    """A display that is the tool's encoding of a sentence of the paper (det X = 1 for "diffeomorphic to SO(n)", a
+    size check) is headed as the encoding, with the words the paper prints; a printed formula stays "As printed"."""
+    rs = [result("stiefel-top-rank", 1, 1, "exact", "fails", expected=True),
+          result("prep", 3, 1, "exact", "fails", expected=True)]
+    md = render_markdown(rs)
+    assert ("Checked as (the tool's encoding of the printed words “both V\\_{n,n} and V\\_{n,n−1} are diffeomorphic "
+            "to SO(n)”, not a formula of the paper):") in md
+    assert "As printed:" in md
+    tex = render_latex(rs)
+    assert r"Checked as (the tool's encoding of the printed words ``both V\ensuremath{_{n,n}}" in tex

@@ -1295,6 +1295,30 @@ def _errata_body(claims: list[ClaimResults], escape: Callable[[str], str], errat
     return out
 
 
+#: errata whose display is the tool's encoding of words of the paper (a size read as an equation between sizes,
+#: "diffeomorphic to SO(n)" read as det X = 1), not a formula the paper prints: their display is headed as the
+#: encoding, beside the words the paper prints (in the ASCII scripts of :func:`unicode_words` and :func:`tex_words`)
+ENCODED_STATEMENTS = {
+    "stiefel-top-rank": "both V_{n,n} and V_{n,n−1} are diffeomorphic to SO(n)",
+    "neumann2-h-size": "Let h = Ψ(X_0, P_0), v = X_0 X_0^T",
+    "spectral-curve-identity-size": "|a(λ)𝓛*_neum(λ) − w I_n|",
+    "manakov-curve-identity-size": "|a(λ)𝓛*_man(λ) − w I_n|",
+    "vvb-left-factor-size": "left multiplication by the block matrix diag(I_{n-r}, B^{-1})",
+    "vv-printed-shape": "the 2r × (n + r) matrix",
+    "double-neumann-symmetry-group": "R ∈ GL(n, ℝ)",
+    "complex-neumann-momentum-algebra": "the conservation of u(n)",
+}
+
+
+def statement_heading(c: ClaimResults, words: Callable[[str], str]) -> str:
+    """The words over an erratum's display: "As printed:", or, where the display is the tool's encoding of words of
+    the paper (:data:`ENCODED_STATEMENTS`), that it is, with those words (``words`` sets them)."""
+    printed = ENCODED_STATEMENTS.get(c.id) if not (c.shadows or c.claims_file) else None
+    if printed is None:
+        return "As printed:"
+    return f"Checked as (the tool's encoding of the printed words “{words(printed)}”, not a formula of the paper):"
+
+
 def _md_erratum(c: ClaimResults) -> list[str]:
     facts = _erratum_facts(c)
     out = [_md_heading(c), ""]
@@ -1305,7 +1329,7 @@ def _md_erratum(c: ClaimResults) -> list[str]:
             ""]
     st = _md_statement(c.statement)
     if st:
-        out += ["As printed:", "", st, ""]
+        out += [statement_heading(c, lambda t: _md_escape(unicode_words(t))), "", st, ""]
     out += ["Failing runs: " + ", ".join(f"{_md_escape(r.size)} {r.method}" for r in c.failures)
             + ".", ""]
     w = _witness_run(c)
@@ -2478,7 +2502,8 @@ def _tex_erratum(c: ClaimResults, reruns: int = MAX_ERRATUM_RERUNS) -> list[str]
     out += [r"\textbf{" + _note_heading(c) + "} "
             + _erratum_note(c, facts, tex_escape, lambda v: _tex_with_change(c, v, note=True), tex_words), ""]
     if c.statement.strip():
-        out += [r"As printed:\nopagebreak", tex_display(c.statement)]
+        out += [statement_heading(c, tex_words).replace("“", "``").replace("”", "''") + r"\nopagebreak",
+                tex_display(c.statement)]
     w = _witness_run(c)
     out += [tex_escape("Failing runs: " + ", ".join(f"{r.size} {r.method}" for r in c.failures) + "."), ""]
     if w.erratum:
