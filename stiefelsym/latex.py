@@ -137,6 +137,16 @@ def bind_relations(text: str) -> str:
 _CODE_SPAN = re.compile(r"`([^`\n$]+)`")
 
 
+def tt_escape(text: Any) -> str:
+    """Plain text for ``\\texttt``: as :func:`tex_escape`, with the backslash and the braces taken from the typewriter
+    font itself (``\\char92``, ``\\char123``, ``\\char125``): ``\\textbackslash`` and ``\\{`` are symbols of the
+    OMS encoding, which has no typewriter shape (the font warning OMS/cmtt, and a glyph from another font); the tilde
+    and the caret as characters (``\\char126``, ``\\char94``), not as accents."""
+    return (_tex_escape(str(text)).replace(r"\textbackslash{}", r"\char92{}")
+            .replace(r"\{", r"\char123{}").replace(r"\}", r"\char125{}")
+            .replace(r"\~{}", r"\char126{}").replace(r"\^{}", r"\char94{}"))
+
+
 def tex_escape(text: Any) -> str:
     """Plain text to LaTeX text mode: specials escaped, Unicode mapped to LaTeX; a short relation kept on one line
     (:func:`bind_relations`); a code span `like this` set in typewriter type (TeX would print its backticks as
@@ -144,7 +154,7 @@ def tex_escape(text: Any) -> str:
     text = str(text)
     if "`" in text and _CODE_SPAN.search(text):
         parts = _CODE_SPAN.split(text)           # text, code, text, code, ..., text
-        return "".join(r"\texttt{" + _tex_escape(p) + "}" if i % 2 else _tex_escape(p) for i, p in enumerate(parts))
+        return "".join(r"\texttt{" + tt_escape(p) + "}" if i % 2 else _tex_escape(p) for i, p in enumerate(parts))
     return _tex_escape(text)
 
 

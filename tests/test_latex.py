@@ -270,3 +270,12 @@ def test_text_in_a_jupyter_display_has_no_text_mode_command():
     assert "".join(texts) == "rank Φ ≤ 2  x1  50  "
     assert "{\\vert}" in out and "{\\&}" in out and "{\\backslash}" in out and "{\\_}" in out
     assert tex_balanced(out) and _tex_text("") == "\\text{}"
+
+
+def test_typewriter_text_takes_its_backslash_and_braces_from_the_typewriter_font():
+    """\\textbackslash and \\{ are symbols of the OMS encoding, which has no typewriter shape (font warning OMS/cmtt):
+    inside \\texttt the characters of the typewriter font itself are used, the tilde and caret as characters."""
+    from stiefelsym.latex import tex_escape, tt_escape
+    assert tt_escape("\\ref{No} a~b^2") == r"\char92{}ref\char123{}No\char125{} a\char126{}b\char94{}2"
+    assert tex_escape("Printed `{\\ref{No}` here") == r"Printed \texttt{\char123{}\char92{}ref\char123{}No\char125{}} here"
+    assert tex_escape("{\\ref}") == r"\{\textbackslash{}ref\}"

@@ -217,7 +217,8 @@ def test_dimension_free_derivations_go_into_latex():
     tex = render_latex([r], detail=True)
     assert "Dimension-free proof (free)" in tex
     assert "\\paragraph{dPhi}" in tex and "R = X^TX - I" in tex and bad not in tex
-    assert r"\texttt{\textbackslash{}paragraph\{oops\}" in tex
+    # the backslash and braces of the typewriter font itself (\textbackslash, \{ are OMS symbols: no cmtt shape)
+    assert r"\texttt{\char92{}paragraph\char123{}oops\char125{}" in tex
     assert "derivation (residual, rules applied, normal form) is in `verification-runs.tex`" in \
         render_markdown([r])
 
@@ -1111,7 +1112,7 @@ def test_the_slips_of_spelling_and_punctuation_follow_the_typographical_slips():
     assert "Printed `\\{i_1,\\ldots i_k\\}`, meant `\\{i_1,\\ldots, i_k\\}`" in md
     tex = render_latex([r], {"whole_catalog": True})
     assert tex.index(r"\section*{Typographical slips}") < tex.index(r"\section*{Spelling and punctuation}")
-    assert (r"Printed \texttt{\textbackslash{}\{i\_1,\allowbreak{}\textbackslash{}ldots i\_k\textbackslash{}\}}"
+    assert (r"Printed \texttt{\char92{}\char123{}i\_1,\allowbreak{}\char92{}ldots i\_k\char92{}\char125{}}"
             in tex)
     assert r"\texttt{Semonov-\allowbreak{}Tian-\allowbreak{}Shanski}" in tex
 

@@ -23,7 +23,7 @@ from collections import Counter
 from typing import Any, Callable, Iterable, Sequence
 
 from stiefelsym import paperref, sizerules
-from stiefelsym.latex import greek_words, unicode_name, unicode_words, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words
+from stiefelsym.latex import greek_words, unicode_name, unicode_words, math_ok, split_math, tex_balanced, tex_display, tex_escape, tex_words, tt_escape
 from stiefelsym.ir import notation
 from stiefelsym.ir.notation import changes_text as change_text
 from stiefelsym.results import PASSING, VERDICTS, Result, free_scope
@@ -1689,7 +1689,7 @@ def _tt(text: Any) -> str:
     # (not inside a pair of numbers: "--size 2,2" stays whole, for copying; an option stays with its value, the
     # line breaks before "--size", never after it)
     text = re.sub(r"(?<!\S)(--[a-z][a-z-]*) (?=[^-\s])", "\\1\u00a0", str(text))
-    body = re.sub(r",(?![0-9])", r",\\allowbreak{}", tex_escape(text)).replace(";", r";\allowbreak{}")
+    body = re.sub(r",(?![0-9])", r",\\allowbreak{}", tt_escape(text)).replace(";", r";\allowbreak{}")
     body = re.sub(r"[0-9/]{16,}", lambda m: r"\allowbreak{}".join(m.group(0)[i:i + 12]
                                                                    for i in range(0, len(m.group(0)), 8)), body)
     return r"\texttt{" + body + "}"
@@ -1708,11 +1708,14 @@ def _tex_results(rs: list[Result]) -> list[str]:
     return out + [r"\bottomrule", r"\end{longtable}", "}"]
 
 
-def _tex_items(items: list[str]) -> list[str]:
+def _tex_items(items: list[str], ragged: bool = False) -> list[str]:
+    """An itemize of ``items``; ``ragged``: set ragged right, for items in typewriter type (commands), whose spaces do
+    not stretch: justified, their lines are underfull."""
     if not items:
         return []
-    return ([r"\begin{itemize}\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}"]
+    body = ([r"\begin{itemize}\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}"]
             + [r"\item " + x for x in items] + [r"\end{itemize}"])
+    return [r"{\raggedright"] + body + [r"\par}"] if ragged else body
 
 
 def _toc_section(title: str) -> list[str]:
@@ -2470,7 +2473,7 @@ def _tex_derivations(c: ClaimResults) -> list[str]:
             # a derivation that is not balanced LaTeX is shown as its source, ragged right (a space of the typewriter
             # font does not stretch: justified, its lines were overfull or underfull)
             out.append(_fit_derivation(chunk) if tex_balanced(chunk)
-                       else r"{\raggedright\texttt{" + tex_escape(chunk) + r"}\par}")
+                       else r"{\raggedright\texttt{" + tt_escape(chunk) + r"}\par}")
         if len(r.derivation) > MAX_DERIVATIONS:
             out.append(tex_escape(f"… and {len(r.derivation) - MAX_DERIVATIONS} more entries "
                                   "(in full in results.json)."))
@@ -2536,7 +2539,7 @@ def _tex_erratum_tail(c: ClaimResults, facts: dict[str, Any], w: Result, out: li
         shown = _shown(others, reruns)
         more = [f"… and {len(others) - shown} more (in results.json)"] if len(others) > shown else []
         out += ["Every other failure, reproducible with:"] + _tex_items(
-            [_tt(x) for x in others[:shown]] + [tex_escape(m) for m in more])
+            [_tt(x) for x in others[:shown]] + [tex_escape(m) for m in more], ragged=True)
     # the verified corrections are in the note for the authors and in the list of candidates below: not
     # a third time here
     return out + _tex_corrections(c)
