@@ -489,6 +489,11 @@ def test_mutation_markdown_document_lists_everything():
     assert "- `prep#1` line 13: flip the sign of the term `b_1` in `a*b | c`: **survived float, free**" in md
     assert "`wrong`: the printed statement fails at every size" in md
     assert "entry (1,2) = 3/7 & 100% #" in md
+    # its words are defined before it uses them, and "unresolved" is not said to be "killed" (refuted)
+    terms = md.index("Terms used below:")
+    for word in ("mutant", "refuted", "equivalent", "survivor", "unresolved", "missed"):
+        assert md.index(f"- **{word}**") > terms
+    assert terms < md.index("Each claim's source is corrupted") and "killed only by" not in md
 
 
 def test_mutation_section_in_latex_compiles(results, tmp_path):
