@@ -864,18 +864,20 @@ def test_one_misprint_repaired_by_one_correction_in_two_statements_is_counted_on
           + _erratum_pair("extends", ["LA3D", "LA3"], place="the blocks of (5) §10")
           + _erratum_pair("elsewhere", ["LA3D"], place="the display before (4) §8"))
     md = render_markdown(rs)
-    assert "3 fail as printed (from 2 distinct errors of the paper: theorem and extends fail through one error" in md
-    assert "correction: one fix (the same error of the paper as theorem)" in md
+    assert ("3 fail as printed (from 2 distinct places of the paper, each a false statement, a misprinted size or "
+            "index, or a statement taken literally where a hypothesis is tacit or a formula schematic: theorem and "
+            "extends fail through one place") in md
+    assert "correction: one fix (the same place of the paper as theorem)" in md
     assert "(involves: (LA3D)); correction: one fix\n" in md
     tex = render_latex(rs)
-    assert "from 2 distinct errors" in tex and "the same error of the paper as theorem" in tex
+    assert "from 2 distinct places" in tex and "the same place of the paper as theorem" in tex
     # shared words and a shared label without a declared place: two misprints, nothing said
     rs2 = _erratum_pair("a", ["x"]) + _erratum_pair("b", ["x"])
-    assert "distinct errors" not in render_markdown(rs2) and "the same error" not in render_markdown(rs2)
+    assert "distinct places" not in render_markdown(rs2) and "the same place" not in render_markdown(rs2)
     # a claims file's report (its claims may copy the catalog's place and words): nothing is counted together
     meta = {"claims_files": ["mine.py"]}
     for doc in (render_markdown(rs, meta), render_latex(rs, meta)):
-        assert "distinct errors" not in doc and "the same error" not in doc
+        assert "distinct places" not in doc and "the same place" not in doc
 
 
 def test_the_headline_counts_a_correction_shared_by_two_statements_once():
@@ -1024,7 +1026,7 @@ def test_the_headline_counts_slips_reported_in_passing_and_the_errata_with_a_cor
                  erratum="y")]
     text, errata = headline(group_by_claim(rs))
     assert len(errata) == 2 and "where a correction is registered (1 of the 2) it was verified" in text
-    assert text.endswith("Besides these errors, 1 slip of the paper that makes no statement fail is reported in "
+    assert text.endswith("Besides these failures, 1 slip of the paper that makes no statement fail is reported in "
                          "passing: the subscript Iᵣ₊₁ for Iₗ₊₁ in (5) §8 (see neumann-lax).")
 
 

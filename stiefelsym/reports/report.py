@@ -1813,7 +1813,7 @@ def _slips_words(errata: list[ClaimResults]) -> str:
     if not slips:
         return ""
     one = len(slips) == 1
-    return (f" Besides these errors, {len(slips)} {'slip' if one else 'slips'} of the paper that "
+    return (f" Besides these failures, {len(slips)} {'slip' if one else 'slips'} of the paper that "
             f"{'makes' if one else 'make'} no statement fail {'is' if one else 'are'} reported in passing: "
             + "; ".join(f"{s} (see {c.id})" for c, s in slips) + ".")
 
@@ -1982,15 +1982,18 @@ def _kind_words(kind: str, claims: list[ClaimResults]) -> str:
 
 
 def _misprint_words(errata: list[ClaimResults]) -> str:
-    """How many errors of the paper the failures come from (a misprint or a statement that is false: "misprint"
-    would say more than the records do), where some statements are repaired by one correction."""
+    """How many places of the paper the failures come from, where some statements are repaired by one correction.
+    A place is what fails as printed there, whatever its nature (a false statement, a misprinted size or index, or a
+    statement taken literally where a hypothesis is tacit or a formula schematic): "errors" or "misprints" would
+    say more than the records do, which tell these apart only in the words of each erratum."""
     shared = shared_misprints(errata)
     if not shared:
         return ""
     distinct = len(errata) - sum(len(g) - 1 for g in shared)
     names = [", ".join(c.id for c in g[:-1]) + f" and {g[-1].id}" for g in shared]
-    return (f" (from {distinct} distinct errors of the paper: {names[0]} fail through one error, repaired by one "
-            "correction"
+    return (f" (from {distinct} distinct places of the paper, each a false statement, a misprinted size or index, or "
+            f"a statement taken literally where a hypothesis is tacit or a formula schematic: {names[0]} fail through "
+            "one place, repaired by one correction"
             + "".join(f"{'; and so do' if i == len(names) - 1 else '; so do'} {x}" for i, x in enumerate(names[1:], 1))
             + ")")
 
@@ -2037,7 +2040,7 @@ def _listed_correction(c: ClaimResults, words: Callable[[str], str],
     verified = _erratum_facts(c)["verified"]
     if verified:
         first = next((g[0] for g in shared_misprints(errata) if c in g[1:]), None)
-        same = f" (the same error of the paper as {first.id})" if first is not None else ""
+        same = f" (the same place of the paper as {first.id})" if first is not None else ""
         return "; correction: " + words(verified[0]) + same
     return "; no registered correction verified" if c.variants else ""
 
