@@ -1233,3 +1233,14 @@ def test_an_encoding_of_words_of_the_paper_is_not_headed_as_printed():
     assert "As printed:" in md
     tex = render_latex(rs)
     assert r"Checked as (the tool's encoding of the printed words ``both V\ensuremath{_{n,n}}" in tex
+
+
+def test_one_notation_for_probabilities():
+    """Every probability the report prints is m·10⁻ᵏ: the bounds it computes and those in the engine's words."""
+    from stiefelsym.reports.report import format_bound, probability_words
+    assert format_bound(2.5e-31) == "2.5·10⁻³¹" and format_bound(0) == "0" and format_bound(None) == "–"
+    assert probability_words("2 points (chosen so that the bound is <= 1e-30); p 2.5e-31, GF(2^61-1)") == \
+        "2 points (chosen so that the bound is ≤ 10⁻³⁰); p 2.5·10⁻³¹, GF(2^61-1)"
+    r = result("prep", 4, 2, "modular", "checked", certificate="2 points (chosen so that the bound is <= 1e-30)")
+    md = render_markdown([r])
+    assert "bound is ≤ 10⁻³⁰) | 0 | 2.9·10⁻³⁴ |" in md and "e-3" not in md

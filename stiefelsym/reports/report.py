@@ -463,6 +463,19 @@ def format_seconds(s: float | None) -> str:
     return f"{m} min {sec} s" if m < 60 else f"{m // 60} h {m % 60} min"
 
 
+_E_NOTATION = re.compile(r"(?<![\w.])(<= ?)?(\d(?:\.\d+)?)e-(\d+)\b")
+
+
+def probability_words(text: str) -> str:
+    """The engine's words with a probability in e-notation written as the report writes one: "<= 1e-30" as "≤ 10⁻³⁰",
+    "2.5e-31" as "2.5·10⁻³¹"."""
+    def one(m: re.Match) -> str:
+        exp = ("-" + str(int(m.group(3)))).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+        mant = "" if m.group(2) == "1" else m.group(2) + "·"
+        return ("≤ " if m.group(1) else "") + f"{mant}10{exp}"
+    return _E_NOTATION.sub(one, text or "")
+
+
 def format_bound(p: float | None) -> str:
     """A false-pass probability as the whole report writes one: m·10⁻ᵏ (:func:`_power_of_ten`), "0", "–" for none."""
     if p is None:
@@ -1058,7 +1071,8 @@ def _md_results(rs: list[Result]) -> list[str]:
     """The runs of a claim, a row each; consecutive runs at fixed sizes that differ in nothing but their size (the
     same method, verdict, certificate, seed and bound, and no time shown) are one row naming their sizes."""
     cells = [[_md_cell(r.size), r.method, _md_verdict(r), format_seconds(r.seconds),
-              _md_cell(short(quoted_value_words(r.certificate) if of_catalog(r) else r.certificate) or "–"),
+              _md_cell(short(probability_words(quoted_value_words(r.certificate) if of_catalog(r) else r.certificate))
+                       or "–"),
               str(r.seed if r.seed is not None else "–"), format_bound(r.false_pass_bound)] for r in rs]
     universe = [(r.n, r.r) for r in rs if r.n is not None]
     rows: list[list[str]] = []
