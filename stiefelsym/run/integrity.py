@@ -11,6 +11,7 @@ notation that is not its graph's) is caught.
 from __future__ import annotations
 
 import json
+from collections import Counter
 from typing import Any, Callable, Iterable
 
 from stiefelsym.certificate_check import check_certificate
@@ -300,19 +301,39 @@ def _missing_corrections(records: list[dict], registry: Registry, meta: dict) ->
     (:func:`stiefelsym.run.runner.run_with_corrections`): every correction of a claim that failed somewhere under
     a planned method, at every size that method ran the claim at; every correction of a claim the dimension-free
     method did not prove, for every n, r.  A record's planned method is its own, or ``auto`` when the command
-    planned auto and not that method (auto records the method it chose)."""
+    planned auto and not that method (auto records the method it chose); where the command planned that method
+    by name as well, the run at that size has two records, and the second is auto's."""
     methods = list(meta.get("methods") or ["auto"])
-
-    def planned_method(r: dict) -> str:
+    # the methods auto records (the one it chose): the symbolic one, the modular points, and at a hard case the
+    # rational points
+    chosen = {"exact", "modular"} | ({"rational"} if meta.get("hard") else set())
+    count: Counter = Counter()
+    for r in records:
+        count[(r.get("claim"), r.get("variant"), r.get("n"), r.get("r"), r.get("method"))] += 1
+    seen: Counter = Counter()
+    plan: dict[int, frozenset] = {}     # the methods of the command each record may be a run of
+    for r in records:           # in file order
         m = r.get("method")
-        return m if m in methods or m == "free" or "auto" not in methods else "auto"
+        key = (r.get("claim"), r.get("variant"), r.get("n"), r.get("r"), m)
+        seen[key] += 1
+        if "auto" not in methods or m == "free":
+            plan[id(r)] = frozenset({m})
+        elif m not in methods:
+            plan[id(r)] = frozenset({"auto"})
+        elif count[key] == 2:
+            # a method the command planned by name and auto chose as well: the run has two records (the same run,
+            # made twice), the second of them auto's
+            plan[id(r)] = frozenset({"auto" if seen[key] == 2 else m})
+        else:
+            # one record: the named run's, or (a correction run under auto only) auto's
+            plan[id(r)] = frozenset({m, "auto"} if r.get("variant") and m in chosen else {m})
     printed: dict[str, list[dict]] = {}
     variants: dict[tuple, set] = {}
     for r in records:
         cid = r.get("claim")
         if r.get("variant"):
             size = None if r.get("n") is None else (r.get("n"), r.get("r"))
-            variants.setdefault((cid, r["variant"]), set()).add((size, planned_method(r)))
+            variants.setdefault((cid, r["variant"]), set()).add((size, plan[id(r)]))
         else:
             printed.setdefault(cid, []).append(r)
     out = []
@@ -323,28 +344,30 @@ def _missing_corrections(records: list[dict], registry: Registry, meta: dict) ->
         if not corrections:
             continue
         needed: set = set()
-        failed = {planned_method(r) for r in recs if r.get("n") is not None and r.get("verdict") == "fails"}
+        failed = {m for r in recs if r.get("n") is not None and r.get("verdict") == "fails" for m in plan[id(r)]}
         for r in recs:
-            if r.get("n") is not None and planned_method(r) in failed:
-                needed.add(((r.get("n"), r.get("r")), planned_method(r)))
+            for m in plan[id(r)]:
+                if r.get("n") is not None and m in failed:
+                    needed.add(((r.get("n"), r.get("r")), m))
             if r.get("n") is None and r.get("verdict") != "proved":
                 needed.add((None, "free"))
         free_proved = any(r.get("n") is None and r.get("verdict") == "proved" for r in recs)
         for desc in corrections:
             have = variants.get((cid, desc), set())
-            for size, m in sorted(have, key=lambda x: (x[0] or (0, 0), x[1])):
+            for size, ms in sorted(have, key=lambda x: (x[0] or (0, 0), sorted(x[1]))):
                 # the converse: a correction runs only where the claim as printed failed (or was not proved for
                 # every n, r), so a record of it says what the printed claim's records must say
-                made = free_proved is False if size is None else m in failed
+                made = free_proved is False if size is None else bool(ms & failed)
                 if not made:
+                    m = "/".join(sorted(ms))
                     where = "all n, r" if size is None else f"({size[0]},{size[1]})"
                     why = ("the dimension-free method proved the claim as printed" if size is None else
                            f"no record of the claim as printed fails under {m}")
                     out.append(f"{cid} [{desc}] {where} {m}: a record of a run of this correction its command does not "
                                f"make ({why})")
             for size, m in sorted(needed, key=lambda x: (x[0] or (0, 0), x[1])):
-                # auto records the method it chose, which may be one the command also planned by name
-                if (size, m) not in have and not (m == "auto" and any(z == size for z, _ in have)):
+                # a record of one run under a method auto may choose is the named run's or auto's (it cannot tell)
+                if not any(z == size and (m in ms or m == "auto") for z, ms in have):
                     where = "all n, r" if size is None else f"({size[0]},{size[1]})"
                     why = ("the dimension-free method did not prove the claim as printed" if size is None else
                            f"the claim as printed failed under {m}")
