@@ -646,7 +646,7 @@ def _m_killing(s, a, b):
 
 def _m_resolvent(s, mu):
     t = s._t
-    return _call(s, "resolvent", (t.arg(mu),), MAT, t.shape_of(("n", "n")))
+    return _call(s, "resolvent", (t.number_arg(mu),), MAT, t.shape_of(("n", "n")))
 
 
 def _m_q(s, num, den=1):
@@ -732,7 +732,7 @@ def _m_mat(s, rows, tags=("?", "?")):
         for x in r:
             if isinstance(x, Tracer) and x._kind == MAT:
                 return t.refuse("the entries of s.mat are numbers")
-            cells.append(t.arg(x))
+            cells.append(t.number_arg(x))
         out.append(t.g.add("list", tuple(cells)))
     shape = tuple(t.size(1, tg) if tg in ("n", "r") and _val(t.size(1, tg), t) == m else m
                   for tg, m in zip(tags, (len(rows), width)))
@@ -754,7 +754,7 @@ def _m_identity(s, m, tag="?"):
 def _m_scalar_matrix(s, c, m, tag="?"):
     t = s._t
     m = _size_arg(t, m, "the size of a scalar matrix")
-    return _call(s, "scalar_matrix", (t.arg(c), m, _tags(t, tag, 1)[0]), MAT, (m, m))
+    return _call(s, "scalar_matrix", (t.number_arg(c), m, _tags(t, tag, 1)[0]), MAT, (m, m))
 
 
 #: the names of the generic elements an Inverse statement is decided on (no claim code may name them)
@@ -1160,8 +1160,12 @@ class Trace:
     def number_arg(self, x: Any) -> Any:
         """An operand of +, −, · or / (:meth:`arg`; a bool, which Python counts as an int, is no number of a
         statement: as the constants of a Count, the engine's constants are int and Fraction)."""
-        if type(x) is bool:
+        tx = type(x)
+        if tx is bool:
             return self.refuse("a bool is not a number of the IR (exact constants are int and Fraction): write 1 or 0")
+        if tx is str or x is None or tx in (list, tuple, dict, Gradient, TraceConstraints):
+            # arguments of the engine's functions (a name, a list of rows, a tangent), never numbers
+            return self.refuse(f"a {tx.__name__} is not a number of the IR (exact constants are int and Fraction)")
         return self.arg(x)
 
     def kw(self, kw: dict) -> tuple:
@@ -1187,7 +1191,7 @@ class Trace:
                 extra = [self.new("param", (k, i), ANY) for i in range(1, arity)]
             self._open.append(k)
             try:
-                again = self.structure(f(scene, *extra))
+                again = self.structure(self._call_traced(f, scene, extra))
             finally:
                 self._open.pop()
             if again != body:
@@ -1212,7 +1216,7 @@ class Trace:
         self._parents[k] = frozenset(self._open)
         self._open.append(k)
         try:
-            out = f(scene, *extra)
+            out = self._call_traced(f, scene, extra)
             body = self.structure(out)
         finally:
             self._open.pop()
@@ -1230,6 +1234,19 @@ class Trace:
                                "changed between two uses)")
         self._functions[id(f)] = (f, ref, out, like)
         return ref, out
+
+    def _call_traced(self, f: Any, scene: "TraceScene", extra: list) -> Any:
+        """f(scene, *extra) while f is traced.  An exception raised in it is recorded as a refusal before it goes on
+        up: a claim that catches it and goes on would leave a graph with a function begun and never ended."""
+        try:
+            return f(scene, *extra)
+        except TraceRefused:
+            raise                   # (recorded by refuse)
+        except BaseException as exc:
+            self.g.refusals.append(f"a function handed to the engine raised {type(exc).__name__} while it was traced "
+                                   "(a function of the scene must return its value; an exception in it ends the claim, "
+                                   "even where the claim catches it)")
+            raise
 
     def _same_body(self, a: Any, b: Any) -> bool:
         """Whether two traced functions' bodies (a node, or a structure of nodes) are the same graph, up to the
