@@ -254,7 +254,7 @@ def finite_difference(s, values, d):
 
 
 @claim("2r-integrals", paper=("2r-integrals", "LA3", "LA4"), kind="id",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 2},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 2, 5: 1, 6: 1, 7: 1},
        statement=r"|a(\lambda)\mathcal L^*_{neum}(\lambda)-w\mathbf I_{2r}|=w^{2r}+w^{2r-2}a\mathcal I_2+\dots"
                  r"+a^{2r-1}\mathcal I_{2r}:\ \text{no odd powers of }w,\ \deg_\lambda\mathcal I_{2l}=n-l,\ "
                  r"\text{leading coefficient of }\mathcal I_{2l}=\tbinom rl\ \text{on}\ V")
@@ -284,7 +284,7 @@ def even_coefficients(t):
 
 
 @claim("2r-integrals-conserved", paper=("2r-integrals", "LA3", "LA4"), kind="pb",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1, 5: 1, 6: 1, 7: 1}, free_max_r=3,
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 1, 5: 1, 6: 1, 7: 1}, free_max_r=4,
        statement=r"\tfrac{d}{dt}\mathcal I_{2l}(\lambda)=0\ \text{along (N0\_XP2) and (NE\_XP)},\quad "
                  r"\tfrac{d}{d\epsilon}\mathcal I_{2l}(\lambda)\big|_{(Xe^{\epsilon\eta},Pe^{\epsilon\eta})}=0,"
                  r"\ \eta\in so(r),\ l=1,\dots,r")
