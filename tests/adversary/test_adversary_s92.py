@@ -42,3 +42,27 @@ def test_a_caught_exception_of_a_traced_function_is_named():
         r = by[("c3-raise-no-nodes", m)]
         assert r.verdict == "error" and "a function handed to the engine raised RuntimeError" in r.message, r.message
         assert by[("c3-bracket-control", m)].verdict in ("proved", "checked", "numeric"), m
+
+
+# -- the review's own tricks (tests/adversary/s92/own) ------------------------------------------------------------
+
+OWN = Path(__file__).parent / "s92" / "own"
+
+
+def test_a_spoofed_refusal_or_a_caught_str_operand_never_gives_a_verdict():
+    """A traced function that raises the engine's own TraceRefused (caught by the claim), and a str operand whose
+    refusal is caught with a 0 put in its place: both are ``error`` under every method, never a verdict on the false
+    statement that follows."""
+    res = stiefelsym.verify(["own-spoofed-refusal-false", "own-refusal-then-number"], files=[OWN / "fool.py"],
+                            sizes=[(3, 2)], methods=METHODS, jobs=1)
+    assert {r.verdict for r in res} == {"error"}, [(r.claim, r.method, r.verdict) for r in res]
+
+
+def test_the_family_proof_at_r_4_does_not_prove_a_corrupted_invariance():
+    """Negative control of the proof on the family r = 4 (free_max_r = 4, as 2r-integrals-conserved): the
+    coefficients e_2l(L*(λ)) moved along P ↦ P + εAX, which changes them off r = n (truth_family4.py, numpy).  The
+    run at (5,4) fails with a witness, and is proved by no method; at (4,4), r = n, the statement holds."""
+    res = stiefelsym.verify(["own-family4-false"], files=[OWN / "family4.py"], jobs=1)
+    by = {(r.n, r.r): r for r in res}
+    assert by[(5, 4)].verdict == "fails" and by[(5, 4)].witness, by[(5, 4)].message
+    assert by[(4, 4)].verdict in ("proved", "checked"), by[(4, 4)].message
