@@ -713,6 +713,7 @@ def main(argv: list[str] | None = None) -> int:
     """python -m stiefelsym.certificate_check results.json: re-check every certificate in a results file
     (this file also runs on its own: python certificate_check.py results.json), bind it to its record (its
     claim id and graph digest, :func:`bound`) and print what it proves (:func:`statement`)."""
+    import hashlib
     import json
     import sys
 
@@ -724,8 +725,19 @@ def main(argv: list[str] | None = None) -> int:
     for path in paths:
         with open(path, encoding="utf-8") as fh:
             payload = json.load(fh)
+        shared = payload.get("certificates") or {}
         for r in payload.get("results", [payload]):
             data = r.get("certificate_data")
+            if isinstance(data, dict) and list(data) == ["shared"]:
+                # a certificate several records carry is held once, in the file's table "certificates", under the
+                # SHA-256 of its canonical JSON; the key is checked here, since the table is part of the file
+                data = shared.get(data["shared"]) if isinstance(data["shared"], str) else None
+                text = json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=True)
+                if not isinstance(data, dict) or hashlib.sha256(text.encode("ascii")).hexdigest() != r["certificate_data"]["shared"]:
+                    bad += 1
+                    print(f"{r.get('claim', path)}: REJECTED: it refers to a shared certificate the file does not hold "
+                          "under that key")
+                    continue
             if data is None:
                 if r.get("verdict") == "proved" and (r.get("method") == "free" or None in (r.get("n"), r.get("r"))):
                     bad += 1

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import decimal
+import hashlib
 import json
 import math
 import os
@@ -229,11 +230,82 @@ def write_atomic(path: Path, text: str) -> None:
         raise
 
 
+def certificate_key(data: Any) -> str:
+    """The key of a certificate in a results file's table of shared certificates: the SHA-256 of its
+    canonical JSON (keys sorted, no spaces)."""
+    text = json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=True)
+    return hashlib.sha256(text.encode("ascii")).hexdigest()
+
+
+def _share_certificates(records: list[dict[str, Any]]) -> dict[str, Any]:
+    """Replace a certificate carried by several records (a family's dimension-free proof, specialised at each
+    size of the family) by the reference ``{"shared": key}`` in each of them, and return the table
+    {key: certificate} that holds it once.  A certificate of one record stays in its record."""
+    keys: list[str | None] = []
+    seen: dict[int, str] = {}
+    count: dict[str, int] = {}
+    for d in records:
+        data = d["certificate_data"]
+        if data is None:
+            keys.append(None)
+            continue
+        key = seen.get(id(data))
+        if key is None:
+            key = seen[id(data)] = certificate_key(data)
+        keys.append(key)
+        count[key] = count.get(key, 0) + 1
+    table: dict[str, Any] = {}
+    for d, key in zip(records, keys):
+        if key is not None and count[key] > 1:
+            table.setdefault(key, d["certificate_data"])
+            d["certificate_data"] = {SHARED: key}
+    return table
+
+
+#: the one key of a record's reference to a certificate of the file's table "certificates"
+SHARED = "shared"
+
+
+def resolve_shared_certificates(payload: dict[str, Any]) -> None:
+    """Put back, in a parsed results file, each record's certificate that the file holds once in its table
+    "certificates" (:func:`dump_results`), and drop the table.  ValueError, in one line, for a table that
+    is not one, a certificate whose key is not its digest, a reference to no certificate of the table, or a
+    certificate of the table no record refers to."""
+    table = payload.pop("certificates", None)
+    records = payload.get("results")
+    if table is None or not isinstance(records, list):
+        table = {}
+    if not isinstance(table, dict):
+        raise ValueError(f"its table of shared certificates is a JSON {json_kind(table)}, not an object")
+    for key, data in table.items():
+        if not isinstance(data, dict) or certificate_key(data) != key:
+            raise ValueError(f"the shared certificate {key[:16]} is not the one its key names (the key is the "
+                             "SHA-256 of the certificate's canonical JSON)")
+    used = set()
+    for i, d in enumerate(records if isinstance(records, list) else []):
+        data = d.get("certificate_data") if isinstance(d, dict) else None
+        if isinstance(data, dict) and SHARED in data:
+            key = data[SHARED]
+            if len(data) != 1 or not isinstance(key, str) or key not in table:
+                raise ValueError(f"result {i + 1} refers to a shared certificate the file does not hold "
+                                 f"({_short_repr(key)})")
+            d["certificate_data"] = table[key]
+            used.add(key)
+    if set(table) - used:
+        raise ValueError(f"{len(set(table) - used)} shared certificate(s) no result refers to")
+
+
 def dump_results(results: Iterable[Result], meta: dict[str, Any]) -> str:
     """The results file: ``json.dumps(payload, indent=1, default=str)`` byte for byte (tests/test_report.py
     compares them), written by :func:`_indented`, which encodes strings and numbers with the json module's
-    own C functions and leaves out the deep copy of :meth:`Result.to_json` (the encoder only reads)."""
-    payload = {"schema": SCHEMA_VERSION, "meta": meta, "results": [_record(r) for r in results]}
+    own C functions and leaves out the deep copy of :meth:`Result.to_json` (the encoder only reads).  A
+    certificate that several records carry is written once, in the table "certificates" after the results
+    (:func:`_share_certificates`); :func:`load_results` puts it back in each record."""
+    records = [_record(r) for r in results]
+    table = _share_certificates(records)
+    payload: dict[str, Any] = {"schema": SCHEMA_VERSION, "meta": meta, "results": records}
+    if table:
+        payload["certificates"] = table
     out: list[str] = []
     _indented(payload, "\n", out)
     out.append("\n")
@@ -548,6 +620,7 @@ def load_results(path: str | Path) -> tuple[dict[str, Any], list[Result]]:
                          "--format json or reports/results.json, has one)")
     if payload.get("schema", SCHEMA_VERSION) != SCHEMA_VERSION:
         raise ValueError(f"schema {payload.get('schema')!r}, this version reads schema {SCHEMA_VERSION}")
+    resolve_shared_certificates(payload)
     names = {f.name for f in fields(Result)}
     required = {f.name for f in fields(Result) if f.default is MISSING and f.default_factory is MISSING}
     out = []

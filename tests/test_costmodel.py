@@ -257,3 +257,19 @@ def test_every_suggested_method_has_a_grade():
     """A refusal suggests the method predicted fastest, with what its verdict is worth: every method
     it may suggest has its words (the ball method, once fastest after its float64 rung, had none)."""
     assert set(costmodel.SUGGEST_ORDER) <= set(costmodel.GRADES)
+
+
+def test_a_symbolic_run_beyond_its_claims_symbolic_budget_is_predicted_costly(catalog, run):
+    """Beyond a claim's symbolic budget no fit made inside it predicts the symbolic method: 2r-integrals at (9, 9)
+    was predicted at 0.14 s and ran out of memory after 79 s under --budget 1.  Now it is refused up front; within
+    the budget the prediction is the fit's, and the family representatives (timed at every size) keep theirs."""
+    c = catalog.get("2r-integrals")
+    m = costmodel.model()
+    assert c.exact_at(4, 2) and not c.exact_at(4, 3)
+    assert m.predict("exact", c, 4, 2) < 1 <= costmodel.BEYOND_BUDGET_SECONDS <= m.predict("exact", c, 4, 3)
+    assert m.predict("exact", c, 9, 9) > m.predict("exact", c, 5, 3) > 20   # measured: over 45 s at (5, 3)
+    assert m.predict("auto", c, 9, 9) < 60        # auto runs the modular method beyond the budget
+    res = run("verify", "2r-integrals", "--size", "9,9", "--method", "exact", "--budget", "1", "--no-report")
+    assert res.exit_code == 2 and "beyond the budget of 1 s" in res.output, res.output
+    rep = catalog.get(costmodel.FAMILIES["flows"])
+    assert costmodel.beyond_symbolic_budget(rep, 12, 12) > 0 and m.predict("exact", rep, 12, 12) < 1

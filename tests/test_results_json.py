@@ -71,3 +71,58 @@ def test_a_records_slips_are_strings_and_optional(tmp_path):
     path = tmp_path / "old.json"
     path.write_text(json.dumps({"schema": SCHEMA_VERSION, "meta": {}, "results": [old]}))
     assert load_results(path)[1][0].slips == []
+
+
+def _shared_pair() -> list[Result]:
+    cert = {"format": "f", "entries": [{"terms": [[1, "X"]]}], "about": {"claim": "c", "digest": "d"}}
+    return [_result(n=4, r=4, method="exact", verdict="proved", certificate_data=cert),
+            _result(n=5, r=4, method="exact", verdict="proved", certificate_data=json.loads(json.dumps(cert))),
+            _result(n=2, r=1, method="exact", verdict="proved", certificate_data={"format": "g", "about": {}})]
+
+
+def test_a_certificate_several_records_carry_is_written_once_and_read_back_into_each(tmp_path):
+    """A family's dimension-free proof specialised at several sizes is one certificate: the file holds it once,
+    in its table "certificates" under the SHA-256 of its canonical JSON, the records refer to it, and loading
+    puts it back in each record; a certificate of one record stays in its record."""
+    from stiefelsym.results import certificate_key, load_results
+    results = _shared_pair()
+    text = dump_results(results, {})
+    payload = json.loads(text)
+    key = certificate_key(results[0].certificate_data)
+    assert list(payload["certificates"]) == [key] and payload["certificates"][key] == results[0].certificate_data
+    assert [r["certificate_data"] for r in payload["results"][:2]] == [{"shared": key}] * 2
+    assert payload["results"][2]["certificate_data"] == {"format": "g", "about": {}}
+    expected = json.dumps(dict(payload), indent=1, default=str) + "\n"
+    assert text == expected   # still json.dumps's text, byte for byte
+    path = tmp_path / "r.json"
+    path.write_text(text)
+    assert [r.to_json() for r in load_results(path)[1]] == [r.to_json() for r in results]
+    assert "certificates" not in dump_results(results[1:], {})   # one carrier: nothing shared
+
+
+def test_a_shared_certificate_that_is_not_the_one_its_key_names_is_refused(tmp_path, capsys):
+    """Editing the shared certificate (or a reference to it) is caught on loading, by the check command and by
+    the independent checker run on the file: the key is the digest of the certificate."""
+    from stiefelsym.certificate_check import main as check_main
+    from stiefelsym.results import load_results
+    payload = json.loads(dump_results(_shared_pair(), {}))
+    key = next(iter(payload["certificates"]))
+    edited = json.loads(json.dumps(payload))
+    edited["certificates"][key]["entries"] = []
+    dangling = json.loads(json.dumps(payload))
+    dangling["results"][0]["certificate_data"] = {"shared": "0" * 64}
+    unused = json.loads(json.dumps(payload))
+    unused["results"][0]["certificate_data"] = unused["results"][1]["certificate_data"] = None
+    for name, bad, words in (("edited", edited, "not the one its key names"),
+                             ("dangling", dangling, "does not hold"), ("unused", unused, "no result refers to")):
+        path = tmp_path / f"{name}.json"
+        path.write_text(json.dumps(bad))
+        try:
+            load_results(path)
+        except ValueError as exc:
+            assert words in str(exc)
+        else:
+            raise AssertionError(f"the {name} table was read")
+        if name != "unused":
+            assert check_main([str(path)]) == 1
+            assert "REJECTED: it refers to a shared certificate" in capsys.readouterr().out

@@ -16,7 +16,7 @@ import click
 from stiefelsym.cli import InputError, _record_ids, _registry, recorded_claims_files, require_results_file, standalone_command
 from stiefelsym.methods.hard import HARD_CASES
 from stiefelsym.run.integrity import MAX_N_CHECKED, check_results, run_origin
-from stiefelsym.results import json_kind, meta_problems, parse_json
+from stiefelsym.results import json_kind, meta_problems, parse_json, resolve_shared_certificates
 from stiefelsym.run.runner import METHODS
 
 _Command = standalone_command("stiefelsym check")
@@ -42,6 +42,7 @@ def check(results_file: Path, no_rerun: bool, claims_files: tuple[str, ...]) -> 
         if missing:
             raise TypeError(f"no {' and no '.join(missing)} at its top level (a file written by `stiefelsym verify "
                             "--report-dir`, or --format json, has the results and the meta of its run)")
+        resolve_shared_certificates(payload)
         records = payload["results"]
         meta = payload["meta"]
         if not isinstance(records, list) or not all(isinstance(r, dict) for r in records):

@@ -15,7 +15,7 @@ import click
 
 from stiefelsym.cli import InputError, SeedType, standalone_command
 
-from stiefelsym.results import parse_json, record_problems, write_atomic
+from stiefelsym.results import parse_json, record_problems, resolve_shared_certificates, write_atomic
 
 EXIT_INPUT = 2
 DEFAULT_RESULTS = (Path("reports/results.json"), Path("reports/all/results.json"))
@@ -52,6 +52,7 @@ def _load_verdicts(paths: list[Path], explicit: bool) -> dict[str, Any]:
             continue
         try:
             payload = parse_json(path.read_text(encoding="utf-8"))
+            resolve_shared_certificates(payload)
             results = payload["results"]
             if not isinstance(results, list):
                 raise TypeError("results is not a list of records")
