@@ -111,6 +111,14 @@ def primitive(f: Callable | None = None, *, returns: Any = None, like: dict[str,
 STEP_GRAPH_CHECKS: dict[str, Callable[["Trace", Any], None]] = {}
 
 
+def _not_a_value(tx: type) -> str:
+    """The refusal of an object of type ``tx`` as an argument or operand, with a hint for a float and a check."""
+    hint = (": write ½ as s.q(1, 2) or Fraction(1, 2), or divide (x / 2)" if tx is float else
+            ": a statement is a check of its own, the value of a key of the dict the claim returns "
+            "({'dim V': Count(...), 'rank M': Rank(...)})" if tx in (Count, Rank) else "")
+    return f"a {tx.__name__} is not a value of the IR (exact constants are int and Fraction){hint}"
+
+
 def named(qualname: str, obj: Any) -> Any:
     """Register an engine constant (an operator space, an engine function) a claim may pass on."""
     refuse_registration("an engine constant (named)")
@@ -1152,21 +1160,23 @@ class Trace:
             return Named(_NAMED[id(x)][0])
         if functions and callable(x) and not isinstance(x, type):
             return self.function(x, None)[0]
-        hint = (": write ½ as s.q(1, 2) or Fraction(1, 2), or divide (x / 2)" if tx is float else
-                ": a statement is a check of its own, the value of a key of the dict the claim returns "
-                "({'dim V': Count(...), 'rank M': Rank(...)})" if tx in (Count, Rank) else "")
-        return self.refuse(f"a {tx.__name__} is not a value of the IR (exact constants are int and Fraction){hint}")
+        return self.refuse(_not_a_value(tx))
 
     def number_arg(self, x: Any) -> Any:
-        """An operand of +, −, · or / (:meth:`arg`; a bool, which Python counts as an int, is no number of a
-        statement: as the constants of a Count, the engine's constants are int and Fraction)."""
+        """An operand of +, −, · or /: a traced value, an int, a Fraction or a size, and nothing else (an
+        allow-list; a bool, which Python counts as an int, is no number of a statement: as the constants of a
+        Count, the engine's constants are int and Fraction)."""
         tx = type(x)
+        if tx is Tracer or tx is int or tx is Fraction or tx is Dim:
+            return self.arg(x)
         if tx is bool:
             return self.refuse("a bool is not a number of the IR (exact constants are int and Fraction): write 1 or 0")
-        if tx is str or x is None or tx in (list, tuple, dict, Gradient, TraceConstraints):
-            # arguments of the engine's functions (a name, a list of rows, a tangent), never numbers
+        if tx is str or x is None or tx in (list, tuple, dict, Gradient, TraceConstraints, TraceScene) \
+                or id(x) in _NAMED:
+            # arguments of the engine's functions (a name, a list of rows, a tangent, a scene, an engine constant),
+            # never numbers
             return self.refuse(f"a {tx.__name__} is not a number of the IR (exact constants are int and Fraction)")
-        return self.arg(x)
+        return self.refuse(_not_a_value(tx))
 
     def kw(self, kw: dict) -> tuple:
         if not kw:
@@ -1240,12 +1250,12 @@ class Trace:
         up: a claim that catches it and goes on would leave a graph with a function begun and never ended."""
         try:
             return f(scene, *extra)
-        except TraceRefused:
-            raise                   # (recorded by refuse)
         except BaseException as exc:
-            self.g.refusals.append(f"a function handed to the engine raised {type(exc).__name__} while it was traced "
-                                   "(a function of the scene must return its value; an exception in it ends the claim, "
-                                   "even where the claim catches it)")
+            if type(exc) is not TraceRefused or str(exc).removeprefix("refused: ") not in self.g.refusals:
+                # (an engine refusal is recorded by refuse; one the function raised itself is recorded here)
+                self.g.refusals.append(f"a function handed to the engine raised {type(exc).__name__} while it was "
+                                       "traced (a function of the scene must return its value; an exception in it "
+                                       "ends the claim, even where the claim catches it)")
             raise
 
     def _same_body(self, a: Any, b: Any) -> bool:

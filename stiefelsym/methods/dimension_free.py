@@ -59,8 +59,15 @@ def run_free(claim: Claim, func: Callable | None = None) -> Result:
     _fresh_multipliers()
     if claim.expect == "nonzero":
         res = _base_result(claim, None, None, "free", None)
-        res.verdict, res.seconds = "undecided", time.perf_counter() - t0
-        res.message = "rewriting proves vanishing only; a nonvanishing statement needs a witness"
+        failure = _failure_at_a_size(claim, func, None)
+        if failure:
+            # refused (or raising) at a size it is stated for: an ill-formed claim, an `error` there as under every
+            # fixed-size method, not a statement this method leaves to them
+            res.verdict, res.message = "error", f"the claim does not trace at {failure}; an error at the fixed sizes"
+        else:
+            res.verdict = "undecided"
+            res.message = "rewriting proves vanishing only; a nonvanishing statement needs a witness"
+        res.seconds = time.perf_counter() - t0
         return res
     # the hypotheses that hold at one r only (the columns of R^r at r = 1, 2; X X^T = I_n at r = n)
     # are taken from the statement's declaration, read once here, and only when every size the
@@ -415,16 +422,22 @@ def _stated_size(claim: Claim, family: SizeFamily | None) -> Any:
 def _fails_at_a_size(claim: Claim, func: Callable, family: SizeFamily | None) -> bool:
     """Whether the claim's graph at a stated size cannot be had because the claim is refused there or its code
     raises (not merely because no graph is at hand there: :class:`~stiefelsym.ir.GraphUnavailable`)."""
+    return bool(_failure_at_a_size(claim, func, family))
+
+
+def _failure_at_a_size(claim: Claim, func: Callable, family: SizeFamily | None) -> str:
+    """What stops the claim's graph at a stated size (its refusal, or the exception of its code), "" when nothing
+    does or no graph is at hand there."""
     from stiefelsym.ir import _compiled_graph as compile_claim
     from stiefelsym.scene import REALIZATIONS
     z = _stated_size(claim, family)
     try:
         compile_claim(func, z.n, z.r, (REALIZATIONS[claim.realization].name, REALIZATIONS[claim.realization].build))
     except GraphUnavailable:
-        return False
-    except Exception:   # noqa: BLE001 - refused, or the claim's own code raised: an error at that size
-        return True
-    return False
+        return ""
+    except Exception as exc:   # noqa: BLE001 - refused, or the claim's own code raised: an error at that size
+        return f"({z.n},{z.r}): {type(exc).__name__}: {exc}"
+    return ""
 
 
 def needs_text(claim: Claim, func: Callable, refusal: str, family: SizeFamily | None = None) -> tuple[str, bool]:

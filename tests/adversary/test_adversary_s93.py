@@ -1,0 +1,64 @@
+"""Stop 93's replays.
+
+- Stop 92's h2 M1: under ``free``, a nonvanishing statement whose trace is refused was ``undecided`` ("rewriting proves
+  vanishing only"), where every fixed-size method says ``error``: the method showed through the outcome.  It is
+  ``error`` under free too, with the refusal.
+- Stop 92's h2 M2: a check with no entries (a 0×0 block) was ``inconclusive`` under ball ("no residuals to
+  enclose") and ``error`` elsewhere.  Ball now refuses it with the message of the others.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import stiefelsym
+
+OWN = Path(__file__).parent / "s93" / "own"
+FIXED = ["exact", "modular", "rational", "float", "ball"]
+
+
+def test_a_refused_or_vacuous_claim_has_one_outcome_whatever_the_method():
+    res = stiefelsym.verify(["own-refused-nonzero", "own-refused-zero", "own-empty-check", "own-empty-beside-false"],
+                            files=[OWN / "same_outcome.py"], sizes=[(3, 2)], methods=FIXED + ["free"], jobs=1)
+    by = {(r.claim, r.method): r for r in res}
+    for cid in ("own-refused-nonzero", "own-refused-zero"):
+        for m in FIXED + ["free"]:
+            r = by[(cid, m)]
+            assert r.verdict == "error" and "spaces do not match" in r.message, (cid, m, r.verdict, r.message)
+    for cid in ("own-empty-check", "own-empty-beside-false"):
+        for m in FIXED:
+            r = by[(cid, m)]
+            assert r.verdict == "error" and "has no entries" in r.message, (cid, m, r.verdict, r.message)
+        # a block is an entry read: the dimension-free scene leaves it to the fixed sizes (never a verdict)
+        assert by[(cid, "free")].verdict == "undecided"
+
+
+def test_a_refusal_a_traced_function_raises_itself_is_named_as_such():
+    """Stop 92 left it: a function handed to ``s.d`` that raised the engine's own TraceRefused (caught by the claim)
+    gave ``error`` saying the claim had changed the graph.  It is now recorded as what it is."""
+    fool = Path(__file__).parent / "s92" / "own" / "fool.py"
+    res = stiefelsym.verify(["own-spoofed-refusal-false"], files=[fool], sizes=[(3, 2)], methods=FIXED + ["free"],
+                            jobs=1)
+    for r in res:
+        assert r.verdict == "error", (r.method, r.verdict)
+        assert "a function handed to the engine raised TraceRefused" in r.message, (r.method, r.message)
+
+
+def test_an_operand_is_a_traced_value_an_int_a_fraction_or_a_size_and_nothing_else():
+    """The operands of +, −, ·, / are an allow-list: a scene, an engine constant (an operator space), a float, a
+    complex number are refused when the claim is traced, whatever the method."""
+    import pytest
+
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.trace import TraceRefused
+    from stiefelsym.scene import REALIZATIONS
+    cons = (REALIZATIONS["standard"].name, REALIZATIONS["standard"].build)
+
+    def scene_operand(s):
+        return {"r": s.P - s.P * s}
+
+    def complex_operand(s):
+        return {"r": s.P - s.P * 1j}
+    for f, words in ((scene_operand, "a TraceScene is not a number of the IR"),
+                     (complex_operand, "a complex is not a value of the IR")):
+        with pytest.raises(TraceRefused, match=words):
+            compile_claim(f, 3, 2, cons)
