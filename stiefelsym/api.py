@@ -83,6 +83,28 @@ def _plain_size(s: Any) -> Size:
     return Size(n, r)
 
 
+def _check_arguments(methods: tuple, sizes: Any, seed: Any, timeout: Any, memory: Any, jobs: Any, budget: Any) -> None:
+    """ValueError, naming the argument, for arguments of :func:`verify` the command line would refuse: a run of
+    nothing (no method, an empty list of sizes) is not a green result."""
+    import math
+
+    def number(x: Any) -> bool:
+        return type(x) in (int, float) and math.isfinite(x)
+    if not methods:
+        raise ValueError("methods names no method: give at least one of auto, exact, rational, modular, float, ball, "
+                         "free")
+    if sizes is not None and len(sizes) == 0:
+        raise ValueError("sizes=[] names no size: give (n, r) pairs, or sizes=None for each claim's own sizes")
+    if type(seed) is not int or seed < 0:
+        raise ValueError(f"seed must be a non-negative int (the seed of every random choice of the run), not {seed!r}")
+    if type(jobs) is not int or jobs < 1:
+        raise ValueError(f"jobs must be an int >= 1 (the worker processes), not {jobs!r}")
+    for name, x, optional in (("timeout", timeout, False), ("memory", memory, True), ("budget", budget, True)):
+        if (x is None and not optional) or (x is not None and (not number(x) or x <= 0)):
+            raise ValueError(f"{name} must be a positive number{' or None' if optional else ''} (seconds"
+                             f"{'; GiB for memory' if name == 'memory' else ''}), not {x!r}")
+
+
 def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
            files: PathLike | Iterable[PathLike] = (),
            sizes: Sequence[tuple[int, int] | Size | str] | None = None,
@@ -113,6 +135,8 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
     if isinstance(methods, str):
         methods = (methods,)
     methods = tuple(methods)
+    sizes = None if sizes is None else list(sizes)
+    _check_arguments(methods, sizes, seed, timeout, memory, jobs, budget)
     pairs: list[Size] | None = None if sizes is None else [
         _plain_size(_size_text(s) if isinstance(s, str) else s) for s in sizes]
     named = [claims] if isinstance(claims, (str, Claim)) else (None if claims is None else list(claims))

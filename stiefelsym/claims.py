@@ -110,6 +110,9 @@ _OWN = (deadline.__enter__.__code__, deadline.__exit__.__code__)
 
 
 KINDS = ("id", "lax", "pb", "dim", "not", "geo")
+#: the realizations of T*V a claim may be stated on (the keys of stiefelsym.scene.REALIZATIONS, a test holds them
+#: equal: the scene is not imported here)
+REALIZATION_NAMES = ("standard", "metric")
 
 
 Checks = Mapping[str, Any]
@@ -373,6 +376,12 @@ class Claim:
                                  "without $ or a control character (the paper's cond_XP, LA1, ...)")
         if self.expect not in ("holds", "nonzero", "fails"):
             raise ValueError(f"claim {self.id}: expect must be 'holds', 'nonzero' or 'fails'")
+        if self.realization not in REALIZATION_NAMES:
+            raise ValueError(f"claim {self.id}: realization {self.realization!r} is not one of "
+                             f"{', '.join(REALIZATION_NAMES)} (the constraints of T*V the claim is stated on)")
+        if type(self.exact_max_n) is not int or self.exact_max_n < 0:
+            raise ValueError(f"claim {self.id}: exact_max_n is the largest n (an int >= 0) at which auto tries the "
+                             f"symbolic method first; not {self.exact_max_n!r}")
         if not self.sizes:
             raise ValueError(f"claim {self.id}: no sizes")
         for pair in self.exact_max_r:
@@ -767,6 +776,12 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
     subscript I_{r+1} for I_{l+1} in (5) §8"), which make no statement fail."""
     if exact_max_n is None:
         exact_max_n = DIM_EXACT_MAX_N if kind == "dim" else IDENTITY_EXACT_MAX_N
+    for name, value in (("statement", statement), ("erratum", erratum), ("equivariance", equivariance),
+                        ("realization", realization), ("expect", expect)):
+        if not isinstance(value, str):
+            raise ValueError(f"claim {id!r}: {name} is a str, not {value!r}")
+    if not isinstance(paper, str) and (not isinstance(paper, (tuple, list)) or any(type(x) is not str for x in paper)):
+        raise ValueError(f"claim {id!r}: paper is a label (a str) or a tuple of labels, not {paper!r}")
 
     def deco(fn):
         labels = (paper,) if isinstance(paper, str) else tuple(paper)

@@ -116,7 +116,11 @@ def _not_a_value(tx: type) -> str:
     hint = (": write ½ as s.q(1, 2) or Fraction(1, 2), or divide (x / 2)" if tx is float else
             ": a statement is a check of its own, the value of a key of the dict the claim returns "
             "({'dim V': Count(...), 'rank M': Rank(...)})" if tx in (Count, Rank) else "")
-    return f"a {tx.__name__} is not a value of the IR (exact constants are int and Fraction){hint}"
+    return f"{_article(tx.__name__)} {tx.__name__} is not a value of the IR (exact constants are int and Fraction){hint}"
+
+
+def _article(word: str) -> str:
+    return "an" if word[:1].lower() in "aeiou" else "a"
 
 
 def named(qualname: str, obj: Any) -> Any:
@@ -1175,7 +1179,8 @@ class Trace:
                 or id(x) in _NAMED:
             # arguments of the engine's functions (a name, a list of rows, a tangent, a scene, an engine constant),
             # never numbers
-            return self.refuse(f"a {tx.__name__} is not a number of the IR (exact constants are int and Fraction)")
+            return self.refuse(f"{_article(tx.__name__)} {tx.__name__} is not a number of the IR (exact constants are "
+                               "int and Fraction)")
         return self.refuse(_not_a_value(tx))
 
     def kw(self, kw: dict) -> tuple:

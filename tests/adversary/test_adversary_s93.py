@@ -62,3 +62,31 @@ def test_an_operand_is_a_traced_value_an_int_a_fraction_or_a_size_and_nothing_el
                      (complex_operand, "a complex is not a value of the IR")):
         with pytest.raises(TraceRefused, match=words):
             compile_claim(f, 3, 2, cons)
+
+
+def test_the_options_of_a_claim_and_of_verify_are_checked_with_the_argument_named():
+    """Stop 93's h2 I3, I4, I5: ``@claim(exact_max_n="5")``, ``realization="bogus"``, ``paper=5`` and
+    ``statement=None`` gave raw Python errors (or an ``error`` at every run); ``verify(sizes=[])`` and
+    ``verify(methods=[])`` returned nothing with ``ok == True``; ``seed=1.5``, ``jobs=1.5`` and ``budget=nan`` were
+    accepted.  Each is a ValueError that names the option."""
+    import math
+
+    import pytest
+
+    from stiefelsym import claim
+    from stiefelsym.claims import REALIZATION_NAMES
+    from stiefelsym.scene import REALIZATIONS
+    assert tuple(REALIZATIONS) == REALIZATION_NAMES
+
+    def body(s):
+        return {"r": s.X.T @ s.X - s.Ir}
+    for options, words in (({"exact_max_n": "5"}, "exact_max_n"), ({"exact_max_n": math.nan}, "exact_max_n"),
+                           ({"realization": "bogus"}, "realization"), ({"paper": 5}, "paper"),
+                           ({"statement": None}, "statement")):
+        with pytest.raises(ValueError, match=words):
+            claim("own-options", kind="id", sizes=[(2, 1)], **options)(body)
+    for kwargs, words in (({"sizes": []}, "sizes"), ({"methods": []}, "methods"), ({"seed": 1.5}, "seed"),
+                          ({"seed": "random"}, "seed"), ({"jobs": 1.5}, "jobs"), ({"budget": math.nan}, "budget"),
+                          ({"timeout": "5"}, "timeout"), ({"memory": 0}, "memory")):
+        with pytest.raises(ValueError, match=words):
+            stiefelsym.verify(["neumann-lax"], **kwargs)
