@@ -67,11 +67,9 @@ def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None,
 
 
 def _size_text(text: str) -> tuple[int, int]:
-    """An "n,r" text as the pair (n, r) (ValueError otherwise, naming the text)."""
-    parts = text.split(",")
-    if len(parts) != 2 or not all(p.strip().isdigit() for p in parts):
-        raise ValueError(f"a size is a pair of ints (n, r) or a text 'n,r', not {text!r}")
-    return int(parts[0]), int(parts[1])
+    """An "n,r" text as the pair (n, r), read as ``--size`` reads it (ValueError otherwise, naming the text)."""
+    from stiefelsym.sizerules import parse_size
+    return parse_size(text)
 
 
 def _plain_size(s: Any) -> Size:

@@ -108,9 +108,17 @@ def pytest_collect_file(file_path: Path, parent: Any) -> Any:
 _LOADED: dict[tuple[str, tuple], tuple[list[Any], str | None]] = {}
 
 
-def _sizes_asked(config: Any) -> list[tuple[int, ...]]:
-    return [tuple(int(x) for x in s.split(",")) for s in config.getoption("stiefelsym_size") or ()
-            if s.count(",") == 1 and all(x.strip().isdigit() for x in s.split(","))]
+def _sizes_asked(config: Any) -> list[tuple[int, int]]:
+    """The sizes of --stiefelsym-size, read as ``--size`` reads them (a text that is no size is left to the
+    collection, which refuses it)."""
+    from stiefelsym.sizerules import parse_size
+    out = []
+    for text in config.getoption("stiefelsym_size") or ():
+        try:
+            out.append(parse_size(text))
+        except ValueError:
+            pass
+    return out
 
 
 def _load(config: Any, path: Path) -> tuple[list[Any], str | None]:
@@ -208,10 +216,11 @@ class ClaimsFile(pytest.File):
         methods = config.getoption("stiefelsym_method") or ["auto"]
         sizes = None
         if config.getoption("stiefelsym_size"):
+            from stiefelsym.sizerules import parse_size
             try:
-                sizes = [Size(*(int(x) for x in s.split(","))) for s in config.getoption("stiefelsym_size")]
-            except (TypeError, ValueError):
-                raise self.CollectError("--stiefelsym-size takes n,r (two integers)") from None
+                sizes = [Size(*parse_size(s)) for s in config.getoption("stiefelsym_size")]
+            except ValueError as exc:
+                raise self.CollectError(f"--stiefelsym-size {exc}") from None
         claims = self._claims()
         if sizes is not None and claims and len(runner.sizes_without_claims(claims, sizes)) == len(sizes):
             # no claim of this file is stated at the sizes asked for (another file's may be): only its

@@ -15,6 +15,25 @@ from typing import Callable, Iterable, NamedTuple
 
 Size = tuple[int, int]
 
+#: a size as text: "n,r", with spaces, signs and "n=", "r=" allowed (the one reading of --size, of a text in
+#: ``verify(sizes=...)`` and of the pytest plugin's --stiefelsym-size)
+_SIZE_TEXT = re.compile(r"\s*(?:n\s*=\s*)?([+-]?\d+)\s*,\s*(?:r\s*=\s*)?([+-]?\d+)\s*")
+
+
+def parse_size(text: str) -> Size:
+    """The size (n, r) an "n,r" text names, with 1 <= r <= n; ValueError, in one line naming the text, otherwise."""
+    m = _SIZE_TEXT.fullmatch(str(text))
+    if not m:
+        raise ValueError(f"{text!r} is not a size; write n,r with integers 1 <= r <= n, e.g. 4,2")
+    n, r = int(m.group(1)), int(m.group(2))
+    if n < 1:
+        raise ValueError(f"{text!r}: n = {n}, but the Stiefel variety V(n,r) needs n >= 1")
+    if r < 1:
+        raise ValueError(f"{text!r}: r = {r}, but the Stiefel variety V(n,r) needs r >= 1")
+    if r > n:
+        raise ValueError(f"{text!r}: r = {r} > n = {n}, but the Stiefel variety V(n,r) needs r <= n")
+    return n, r
+
 
 class Atom(NamedTuple):
     text: str

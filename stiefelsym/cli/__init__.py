@@ -24,6 +24,7 @@ from typing import Any, Sequence
 
 import click
 
+from stiefelsym.sizerules import parse_size
 from stiefelsym._lazy import lazy
 from stiefelsym.claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog
 from stiefelsym.methods.hard import HARD_CASES
@@ -209,19 +210,10 @@ class SizeType(click.ParamType):
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Size:
         if isinstance(value, Size):
             return value
-        m = re.fullmatch(r"\s*(?:n\s*=\s*)?([+-]?\d+)\s*,\s*(?:r\s*=\s*)?([+-]?\d+)\s*", str(value))
-        if not m:
-            self.fail(f"{value!r} is not a size; write n,r with integers 1 <= r <= n, e.g. 4,2",
-                      param, ctx)
-        n, r = int(m.group(1)), int(m.group(2))
-        if n < 1:
-            self.fail(f"{value!r}: n = {n}, but the Stiefel variety V(n,r) needs n >= 1", param, ctx)
-        if r < 1:
-            self.fail(f"{value!r}: r = {r}, but the Stiefel variety V(n,r) needs r >= 1", param, ctx)
-        if r > n:
-            self.fail(f"{value!r}: r = {r} > n = {n}, but the Stiefel variety V(n,r) needs r <= n",
-                      param, ctx)
-        return Size(n, r)
+        try:
+            return Size(*parse_size(str(value)))
+        except ValueError as exc:
+            self.fail(str(exc), param, ctx)
 
 
 class MethodType(click.ParamType):

@@ -13,7 +13,6 @@ from __future__ import annotations
 import json
 
 import os
-import re
 import shlex
 import time
 from datetime import datetime, timezone
@@ -22,6 +21,7 @@ from typing import Any, Sequence
 
 import click
 
+from stiefelsym.sizerules import parse_size
 from stiefelsym.cli import InputError, SeedType, standalone_command
 
 from stiefelsym.claims import CatalogError, Claim, Registry, Size, load_catalog
@@ -53,13 +53,10 @@ def _without_seconds(claim: dict) -> dict:
     return out
 
 def _parse_size(text: str) -> Size:
-    m = re.fullmatch(r"\s*(?:n\s*=\s*)?([+-]?\d+)\s*,\s*(?:r\s*=\s*)?([+-]?\d+)\s*", text)
-    if not m:
-        raise MutateInputError(f"--size {text!r} is not a size; write n,r with integers 1 <= r <= n, e.g. 4,2")
-    n, r = int(m.group(1)), int(m.group(2))
-    if not 1 <= r <= n:
-        raise MutateInputError(f"--size {text!r}: the Stiefel variety V(n,r) needs 1 <= r <= n")
-    return Size(n, r)
+    try:
+        return Size(*parse_size(text))
+    except ValueError as exc:
+        raise MutateInputError(f"--size {exc}") from None
 
 
 def _registry(claims_file: str | None, sizes: Sequence[Size] = (), ids: Sequence[str] = ()) -> Registry:

@@ -7,12 +7,12 @@ tables); 2 bad input (one line on stderr); 130 interrupted (nothing is written).
 from __future__ import annotations
 
 import json
-import re
 from pathlib import Path
 from typing import Any
 
 import click
 
+from stiefelsym.sizerules import parse_size
 from stiefelsym.cli import InputError, SeedType, standalone_command
 
 from stiefelsym.results import parse_json, record_problems, resolve_shared_certificates, write_atomic
@@ -31,12 +31,10 @@ _Command = standalone_command("stiefelsym tables")
 
 
 def _parse_size(text: str) -> tuple[int, int]:
-    m = re.fullmatch(r"\s*(?:n\s*=\s*)?([+-]?\d+)\s*,\s*(?:r\s*=\s*)?([+-]?\d+)\s*", text)
-    if not m:
-        raise TablesInputError(f"--size {text!r} is not a size; write n,r with integers 1 <= r <= n, e.g. 4,2")
-    n, r = int(m.group(1)), int(m.group(2))
-    if not 1 <= r <= n:
-        raise TablesInputError(f"--size {text!r}: the Stiefel variety V(n,r) needs 1 <= r <= n")
+    try:
+        n, r = parse_size(text)
+    except ValueError as exc:
+        raise TablesInputError(f"--size {exc}") from None
     if n > N_LIMIT:
         raise TablesInputError(f"--size {text!r}: the tables go up to n = {N_LIMIT}")
     return n, r

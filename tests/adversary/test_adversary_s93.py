@@ -90,3 +90,18 @@ def test_the_options_of_a_claim_and_of_verify_are_checked_with_the_argument_name
                           ({"timeout": "5"}, "timeout"), ({"memory": 0}, "memory")):
         with pytest.raises(ValueError, match=words):
             stiefelsym.verify(["neumann-lax"], **kwargs)
+
+
+def test_a_size_text_is_read_one_way_by_the_command_line_the_library_and_the_pytest_plugin():
+    """Stop 93's h2 I1: "4,+2" was (4, 2) for --size, a ValueError for ``verify(sizes=["4,+2"])``, and an item (4,2)
+    of the pytest plugin whose file was never traced there.  One reader (stiefelsym.sizerules.parse_size) serves
+    them all, with one message for a text that is no size."""
+    import pytest
+
+    from stiefelsym.api import _size_text
+    from stiefelsym.sizerules import parse_size
+    assert parse_size("4,+2") == parse_size(" n = 4 , r = 2 ") == _size_text("4,+2") == (4, 2)
+    for bad, words in (("4", "is not a size"), ("2,3", "needs r <= n"), ("0,0", "needs n >= 1"),
+                       ("3,-1", "needs r >= 1")):
+        with pytest.raises(ValueError, match=words):
+            parse_size(bad)
