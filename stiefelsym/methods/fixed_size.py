@@ -3205,9 +3205,9 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
         worst = max(entries, key=lambda px: abs(px[1].v))[1]
         ratio = max(entries, key=lambda px: (px[1].e / px[1].m) if px[1].m else (0 if px[1].e == 0 else math.inf))[1]
         run.worst_e, run.worst_m = ratio.e, ratio.m
-        run.log.append(f"{field.name}: max |residual| {float(abs(worst.v)):.2e}, error bound up to "
-                       f"{float(max(x.e for _, x in entries)):.2e}, worst resolution e = {float(ratio.e):.1e} at "
-                       f"term scale m = {float(ratio.m):.1e}")
+        run.log.append(f"{field.name}: max |residual| {_sci(abs(worst.v), 2)}, error bound up to "
+                       f"{_sci(max(x.e for _, x in entries), 2)}, worst resolution e = {_sci(ratio.e, 1)} at "
+                       f"term scale m = {_sci(ratio.m, 1)}")
         clear = [(pos, x) for pos, x in entries if abs(x.v) > x.e]
         if nonzero_claim:
             hit = [(pos, x) for pos, x in clear if _resolves(x)]
@@ -3226,6 +3226,16 @@ def _float_component(claim: Claim, n: int, r: int, seed: int, func: Callable, op
             return run
     run.status = "unresolved"
     return run
+
+
+def _sci(x: Any, digits: int) -> str:
+    """``x`` in scientific notation with ``digits`` decimals, also beyond float64's range (a high-precision value
+    of 2⁻²⁰⁰⁰ is not printed as 0, nor one of 2³⁰⁰⁰ as inf)."""
+    f = float(x)
+    if (f == 0.0 and x != 0) or math.isinf(f):
+        import mpmath
+        return mpmath.nstr(mpmath.mpf(x), digits + 1, min_fixed=1, max_fixed=0)
+    return f"{f:.{digits}e}"
 
 
 def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None) -> Result:
@@ -3331,8 +3341,8 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
     res.residual = None
     res.certificate = "; ".join(
         f"{f'component {c + 1}, ' if len(comps) > 1 else ''}{run.field}: every residual entry |v| <= its error "
-        f"bound e, and e <= 1e-8 x its term scale m (worst e = {float(run.worst_e):.1e} at m = "
-        f"{float(run.worst_m):.1e}); so |exact residual| <= 2e at this point" for c, run in zip(comps, runs))
+        f"bound e, and e <= 1e-8 x its term scale m (worst e = {_sci(run.worst_e, 1)} at m = "
+        f"{_sci(run.worst_m, 1)}); so |exact residual| <= 2e at this point" for c, run in zip(comps, runs))
     res.message = log
     if ranks:
         res.message = (f"not applicable: {', '.join(ranks)}: ranks are decided by exact arithmetic (methods exact, "
@@ -3384,14 +3394,14 @@ class _Enclosures:
 
 def _arb_enclosures(pos: Callable[[int], str], balls: list, scales: np.ndarray, zero: bool) -> _Enclosures:
     # the upper end of |x| rounded up by one ulp of float64 (0 for the ball that is exactly 0); a
-    # ball excludes 0 where the lower end of |x| is positive (a positive float64 never rounds to 0
-    # above 2^-1075)
+    # ball excludes 0 where it does not contain 0, decided in arb (a ball of 2^-2000 excludes 0, though the lower
+    # end of its |x| is 0 in float64)
     raw = np.array([float(b.abs_upper()) for b in balls])
     ups = np.nextafter(raw, math.inf)
     for i in np.flatnonzero(raw == 0).tolist():
         if balls[i].is_zero():
             ups[i] = 0.0
-    return _Enclosures(pos, ups, scales, lambda: np.array([float(b.abs_lower()) > 0 for b in balls], dtype=bool),
+    return _Enclosures(pos, ups, scales, lambda: np.array([not b.contains(0) for b in balls], dtype=bool),
                        lambda i: balls[i].str(17, radius=True), zero)
 
 

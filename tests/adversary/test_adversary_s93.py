@@ -105,3 +105,17 @@ def test_a_size_text_is_read_one_way_by_the_command_line_the_library_and_the_pyt
                        ("3,-1", "needs r >= 1")):
         with pytest.raises(ValueError, match=words):
             parse_size(bad)
+
+
+def test_a_residual_below_float64s_range_is_refuted_by_ball_and_printed_as_it_is():
+    """Stop 93's h2 I6 and M1: (tr XᵀX − r − 1)·2⁻²⁰⁰⁰ printed "max |residual| 0.00e+00" beside "exceeds its error
+    bound" (the mpmath magnitudes went through float64), and ball could not refute it (an enclosure excluded 0 only
+    where the float64 of its lower end was positive).  Ball now decides exclusion in arb; the texts print the
+    magnitudes beyond float64's range."""
+    h2 = Path(__file__).parent / "s93" / "h2" / "k_api.py"
+    res = stiefelsym.verify(["k-pow-false", "k-pow"], files=[h2], sizes=[(3, 2)], methods=["ball", "float"], jobs=1)
+    by = {(r.claim, r.method): r for r in res}
+    assert by[("k-pow-false", "ball")].verdict == by[("k-pow-false", "float")].verdict == "fails"
+    assert by[("k-pow", "float")].verdict == "numeric" and "e-6" in by[("k-pow", "float")].certificate
+    assert by[("k-pow", "ball")].verdict != "fails"
+    assert "mpmath30: max |residual| 0.00e+00" not in by[("k-pow-false", "float")].message
