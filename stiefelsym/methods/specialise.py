@@ -195,18 +195,56 @@ def scope_problem(data: Any, realization: str, family: SizeFamily | None, n: int
             return f"its certificate uses {wrong[0]}, a hypothesis that does not hold at ({n},{r})"
         import symengine as se
         at = {se.Symbol("n"): n, se.Symbol("r"): r}
-        for e in data["entries"]:
-            for t in e["residual"] + e["terms"]:
-                if se.expand(coefficient(t["coef"]).as_numer_denom()[1].subs(at)) == 0:
-                    return f"the coefficient {t['coef']} of its certificate has a pole at ({n},{r})"
+        for coef, den in _denominators(data):
+            if isinstance(den, BaseException):
+                raise den
+            if se.expand(den.subs(at)) == 0:
+                return f"the coefficient {coef} of its certificate has a pole at ({n},{r})"
     except (Rejected, KeyError, TypeError, ValueError, AttributeError, RuntimeError) as exc:
         return f"its certificate cannot be read ({type(exc).__name__}: {exc})"
     return ""
 
 
+#: the denominators of the coefficients of the last certificates read (:func:`_denominators`), by the
+#: certificate's id: the entry keeps the certificate, so the id is not reused while the entry lives
+_DENOMINATORS: "OrderedDict[int, tuple]" = OrderedDict()
+DENOMINATORS_KEPT = 16
+
+
+def _denominators(data: dict) -> list[tuple[Any, Any]]:
+    """The coefficients of a certificate's residuals and terms, each text once, in the order of their first
+    occurrence, with the denominator of each (a symengine expression in n, r); the first that cannot be read
+    ends the list with the exception it raised, as reading the entries in order would (a claim's certificate
+    is read again at each of its sizes: the coefficients are parsed and split into numerator and denominator
+    once)."""
+    hit = _DENOMINATORS.get(id(data))
+    if hit is not None and hit[0] is data:
+        _DENOMINATORS.move_to_end(id(data))
+        return hit[1]
+    out: list[tuple[Any, Any]] = []
+    seen: set = set()
+    try:
+        for e in data["entries"]:
+            for t in e["residual"] + e["terms"]:
+                text = t["coef"]
+                if type(text) is str and text in seen:
+                    continue
+                den = coefficient(text).as_numer_denom()[1]
+                if type(text) is str:
+                    seen.add(text)
+                out.append((text, den))
+    except (Rejected, KeyError, TypeError, ValueError, AttributeError, RuntimeError) as exc:
+        out.append((None, exc))
+    _DENOMINATORS[id(data)] = (data, out)
+    while len(_DENOMINATORS) > DENOMINATORS_KEPT:
+        _DENOMINATORS.popitem(last=False)
+    return out
+
+
 def reset() -> None:
     """Forget the dimension-free results of this process (tests)."""
     _FREE.clear()
+    _DENOMINATORS.clear()
 
 
 def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
