@@ -575,11 +575,16 @@ def _program(g: Graph, deps: list, fused: bool = False) -> list:
 
 
 def _readers(g: Graph) -> dict[int, int]:
-    """How many times each node is read by the graph's nodes."""
+    """How many times each node is read by the graph's nodes (computed once per graph: the fusions of one
+    program each ask; read only)."""
+    cached = g.cache.get("readers")
+    if cached is not None:
+        return cached
     readers: dict[int, int] = {}
     for k in range(len(g.ops)):
         for j in g.refs(k):
             readers[j] = readers.get(j, 0) + 1
+    g.cache["readers"] = readers
     return readers
 
 

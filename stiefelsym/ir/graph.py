@@ -234,6 +234,24 @@ class Graph:
     def _nested(a: tuple) -> list[int]:
         """The nodes a tuple of arguments refers to (last first, nested tuples likewise)."""
         out: list[int] = []
+        for x in reversed(a):
+            t = type(x)
+            if t is Ref:
+                out.append(x[0])
+            elif t is tuple:
+                # a nested tuple's nodes come at its place (last first), before the arguments left of it
+                for y in reversed(x):
+                    t = type(y)
+                    if t is Ref:
+                        out.append(y[0])
+                    elif t is tuple:
+                        out.extend(Graph._nested_tuple(y))
+        return out
+
+    @staticmethod
+    def _nested_tuple(a: tuple) -> list[int]:
+        """:meth:`_nested` of a nested tuple, with an explicit stack (no recursion however deep the nesting)."""
+        out: list[int] = []
         stack = list(a)
         while stack:
             x = stack.pop()
