@@ -316,7 +316,7 @@ def pencil_so_rows(s, l1, l2, x):
     return so_rows(s, x, True) * l1 + so_rows(s, x - s.A, False) * l2
 
 
-@claim("pencil-gl-isomorphism", paper=("central", "LAMBDA12"), kind="dim",
+@claim("pencil-gl-isomorphism", paper=("central", "LAMBDA12"), kind="dim", exact_max_n=7,
        sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"), fails_at=lambda n, r: True,
        place="the sentence before (4) §6",
        erratum="""§6 says: “For λ₂ ≠ 0, the bracket Λ_{λ₁,λ₂} is isomorphic to the canonical Lie–Poisson
