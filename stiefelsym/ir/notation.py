@@ -28,6 +28,20 @@ from typing import Any, Sequence
 
 from stiefelsym.ir.graph import Graph, Named, Ref, Size, node_keys
 
+_SUPERSCRIPT_DIGITS = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def power_of_ten(p: float) -> str:
+    """A bound (a false-pass probability, its target) as the reports print one: m·10⁻ᵏ with one decimal of the
+    mantissa, 10⁻ᵏ where the mantissa is 1 (the target 10⁻³⁰), the number itself where it is not small (0, 0.5,
+    1.0: a bound of at least 0.1 is no power of ten to a reader)."""
+    if not 0 < p < 0.1:
+        return f"{p:g}"
+    mant, exp = f"{p:.1e}".split("e")
+    power = "10" + str(int(exp)).translate(_SUPERSCRIPT_DIGITS)
+    return power if mant == "1.0" else f"{mant}·{power}"
+
+
 #: at most this many letters and numbers of an expression are printed (beyond: an ellipsis)
 CAP = 40
 #: a node with several changes below it and at most this many letters is reported as a whole

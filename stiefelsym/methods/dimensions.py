@@ -31,6 +31,8 @@ from typing import Callable, Iterable, Sequence
 
 import flint
 
+from stiefelsym.ir.notation import power_of_ten
+
 #: every randomized upper bound is pushed below this false-pass probability
 TARGET = 1e-30
 #: random points are drawn from [-2^BITS, 2^BITS]^m
@@ -96,7 +98,7 @@ class Certificate:
             head = f"{self.quantity} in [{self.lower.bound}, {self.upper.bound}]"
         else:
             head = f"{self.quantity} = {self.value}"
-        tail = f"{self.kind}" + (f", p <= {self.false_probability:.1e}" if self.kind == "checked" else "")
+        tail = f"{self.kind}" + (f", p <= {power_of_ten(self.false_probability)}" if self.kind == "checked" else "")
         return f"{head} ({tail}; >= by {self.lower.how}; <= by {self.upper.how})"
 
     def as_dict(self) -> dict:

@@ -42,6 +42,7 @@ from stiefelsym.methods import cayley_right, complex_right, costmodel
 from stiefelsym.methods.costmodel import BudgetError as BudgetError  # the methods raise it (re-exported)
 from stiefelsym.ir import _compiled_graph as _compile_whole
 from stiefelsym.ir.derivative import derivatives, scene_flows
+from stiefelsym.ir.notation import power_of_ten
 from stiefelsym.ir.evaluate import evaluate
 from stiefelsym.ir.seal import verify as verify_engine
 from stiefelsym.ir.passes import BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_needs, coordinate_reads, outside_float_range
@@ -848,8 +849,8 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
             if bound[0] == 0:
                 return ("the zero matrix: every entry is identically 0 in the chart (its numerator is the zero "
                         f"polynomial), so rank 0 over the function field ({_stated(0)})", True)
-            return (f"rank {lower} at an exact rational point (rank >= {lower} over the function field) and rank "
-                    f"<= {bound[0]}: {bound[1]}; two-sided ({_stated(R.expected)})", True)
+            return (f"{_lower_words(lower)} and rank <= {bound[0]}: {bound[1]}; two-sided ({_stated(R.expected)})",
+                    True)
         seconds = SYMBOLIC_RANK_SECONDS
         if lower is not None and lower < R.expected and not _MUTATION_ANALYSIS:
             seconds = REFUTING_RANK_SECONDS
@@ -888,11 +889,12 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
             # verdict checked (a degree near the primes): not decided, never evidence against the printed rank
             raise ExactTimeout(f"the function-field rank exceeded {seconds:.0f} s, and the rank {R.expected} found "
                                f"at {pts} random points of prime fields is not a verdict: the ({R.expected + 1})-minors "
-                               f"have degree <= {D}, so the false-pass bound {joint:.1e} stays above "
-                               f"{POINTS_TARGET:.0e}{note}")
+                               f"have degree <= {D}, so the false-pass bound {power_of_ten(joint)} stays above "
+                               f"{power_of_ten(POINTS_TARGET)}{note}")
         randomized.bounds.append(joint)
-        return (f"rank >= {lower} (exact rank at a rational point) and rank <= {R.expected} with false-pass "
-                f"probability <= {joint:.1e} (rank {R.expected} at {pts} random points of prime fields "
+        return (f"{_lower_words(lower, 'rank >= {lower} (exact rank at a rational point)')} and rank <= "
+                f"{R.expected} with false-pass "
+                f"probability <= {power_of_ten(joint)} (rank {R.expected} at {pts} random points of prime fields "
                 f"p > 2^{PRIME_BITS}; the ({R.expected + 1})-minors have degree <= {D}; the symbolic function-field rank "
                 f"exceeded {SYMBOLIC_RANK_SECONDS:.0f} s); {_stated(R.expected)}{note}", "ok")
     constant = _rational_constant_matrix(M)
@@ -943,7 +945,7 @@ def _sampled_below(M: Mat, rng: random.Random, lower: int | None, expected: int,
     D = max(1, minor_degree() if minor_degree else 1)
     bound = (D / 2 ** PRIME_BITS) ** len(ranks)
     return (f"; at {len(ranks)} random points of prime fields the rank is {' and '.join(map(str, ranks))}, below "
-            f"{expected} too, which a generic rank {expected} would show with probability <= {bound:.1e}: {_who()}'s "
+            f"{expected} too, which a generic rank {expected} would show with probability <= {power_of_ten(bound)}: {_who()}'s "
             f"rank is very likely false, but a "
             f"refutation needs an exact witness (kernel vectors given with Rank(..., kernel=...) bound the rank "
             f"from above with certainty)")
@@ -993,8 +995,18 @@ def _kernel_rank(R: Rank, rng: random.Random, lower: int | None) -> tuple[tuple[
         return None, f"; the kernel certificate gives rank <= {upper}, and the rank at exact points stayed {lower}"
     if lower > upper:       # M K = 0 and rank K = d at points: impossible, so an internal error
         raise RuntimeError(f"rank {lower} at a point exceeds the kernel certificate's bound {upper}")
-    return (f"rank {lower} at an exact rational point (rank >= {lower} over the function field) and {bound}; "
-            f"two-sided ({_stated(R.expected)})", True), ""
+    return (f"{_lower_words(lower)} and {bound}; two-sided ({_stated(R.expected)})", True), ""
+
+
+#: the lower side of a two-sided rank where the rank at a point is 0: "rank >= 0" is true of every matrix, no evidence
+NO_LOWER_BOUND = "no lower bound (none is needed: no rank is below 0)"
+
+
+def _lower_words(lower: int, words: str = "rank {lower} at an exact rational point (rank >= {lower} over the function "
+                 "field)") -> str:
+    """The lower side of a two-sided rank: the rank at an exact point, which bounds the generic rank from below;
+    none where it is 0."""
+    return NO_LOWER_BOUND if lower == 0 else words.format(lower=lower)
 
 
 EQUIVARIANT_REDUCTION = (
@@ -2809,11 +2821,11 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
                f"{', '.join(str(p) for p in primes)}; numerator degree <= d = {deg.numerator}, log2 of its L1 norm "
                f"<= h = {deg.height:.1f}; per point: a false pass needs p | N (at most floor(h/{PRIME_BITS}) of the "
                f"{PRIME_BOUND_TEXT}) or N(x) = 0 mod p (Schwartz-Zippel): <= floor(h/{PRIME_BITS})/K + d/(2^{PRIME_BITS} - d_den) "
-               f"= {eps:.1e}")
+               f"= {power_of_ten(eps)}")
     else:
         how = (f"parameters uniform integers in [-2^{RATIONAL_BOUND.bit_length() - 1}, "
                f"2^{RATIONAL_BOUND.bit_length() - 1}] (|S| = {_size(2 * RATIONAL_BOUND + 1)}); numerator degree "
-               f"<= d = {deg.numerator}; per point (Schwartz-Zippel) d/(|S| - d_den) = {eps:.1e}")
+               f"<= d = {deg.numerator}; per point (Schwartz-Zippel) d/(|S| - d_den) = {power_of_ten(eps)}")
     if claim.expect == "nonzero":
         if nonzero:
             res.verdict = "proved"
@@ -2827,7 +2839,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
         else:
             res.verdict = "fails"
             res.false_pass_bound = joint
-            res.certificate = f"vanished at {points} random points{per}; {how}; probability <= {joint:.1e}{note}"
+            res.certificate = f"vanished at {points} random points{per}; {how}; probability <= {power_of_ten(joint)}{note}"
         return res
     if nonzero or count_bad or rank_certain:
         res.verdict = "fails"
@@ -2866,7 +2878,7 @@ def _run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callab
     else:
         res.verdict = "checked"
         res.false_pass_bound = joint
-        res.certificate = (f"{points} independent points{per} (chosen so that the bound is <= {target:.0e}); "
+        res.certificate = (f"{points} independent points{per} (chosen so that the bound is <= {power_of_ten(target)}); "
                            f"{how}; false-pass probability <= {_joint_text(per_point, eps, points, joint)}{note}")
     if every_point:
         res.verdict = "undecided"
@@ -2921,16 +2933,16 @@ def _bound_text(kind: str, deg: DegreeBound) -> str:
 def _joint_text(per_point: list[list[float]], eps: float, points: int, joint: float) -> str:
     """The joint bound: eps^k when every point has the same bound, else the product per component."""
     if all(len(p) == points and all(e == eps for e in p) for p in per_point):
-        return f"{eps:.1e}^{points} = {joint:.1e}"
-    return (f"{joint:.1e} (the product over each component's points of their own bounds, the largest "
-            f"{eps:.1e})")
+        return f"({power_of_ten(eps)})^{points} = {power_of_ten(joint)}"
+    return (f"{power_of_ten(joint)} (the product over each component's points of their own bounds, the largest "
+            f"{power_of_ten(eps)})")
 
 
 def _cap_text(eps: float, target: float = POINTS_TARGET) -> str:
     if eps >= 1:
-        return f"the per-point bound is {eps:.1e} >= 1"
-    return (f"the per-point bound {eps:.1e} would need more than {POINTS_CAP} points per component to reach "
-            f"{target:.0e} ({POINTS_CAP} points give {eps ** POINTS_CAP:.1e})")
+        return f"the per-point bound is {eps:g} >= 1"
+    return (f"the per-point bound {power_of_ten(eps)} would need more than {POINTS_CAP} points per component to "
+            f"reach {power_of_ten(target)} ({POINTS_CAP} points give {power_of_ten(eps ** POINTS_CAP)})")
 
 
 def _constant_evaluations(claim: Claim, n: int, r: int, seed: int, func: Callable, options: dict | None,

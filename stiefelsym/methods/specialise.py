@@ -31,6 +31,7 @@ from typing import Any, Callable
 from stiefelsym.certificate_check import CASES, R1_ONLY, R2_ONLY, SQUARE, Rejected, coefficient
 from stiefelsym.claims import Claim
 from stiefelsym.ir import SizeFamily, _compiled_graph as compile_claim
+from stiefelsym.ir.notation import power_of_ten
 from stiefelsym.methods import fixed_size
 from stiefelsym.methods.dimension_free import run_free, run_free_on
 from stiefelsym.methods.families import size_families
@@ -323,7 +324,7 @@ def specialised(claim: Claim, n: int, r: int, seed: int, func: Callable | None =
         res.certificate_data = free.certificate_data
     res.reductions += [f"dimension-free: {x}" for x in free.reductions]
     res.reductions.append("cross-check at this size: the residual vanishes at the modular method's random points")
-    bound = f", false-pass bound {check.false_pass_bound:.1e}" if check.false_pass_bound is not None else ""
+    bound = f", false-pass bound {power_of_ten(check.false_pass_bound)}" if check.false_pass_bound is not None else ""
     res.certificate = (f"the dimension-free certificate ({scope}): {free.certificate}; cross-check at this size: "
                        f"the residual vanishes at the modular method's points{bound}")
     return res
