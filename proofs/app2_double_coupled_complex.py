@@ -190,7 +190,7 @@ def double_neumann_printed_integral(s):
     return {"(X^T Y' - Y^T X') - (N + N^T)/2": printed - (noether + noether.T) * Fraction(1, 2)}
 
 
-@claim("double-neumann-symmetry-group", paper=("dual-D", "D-eq"), kind="dim", exact_max_n=7,
+@claim("double-neumann-symmetry-group", encodes='R ∈ GL(n, ℝ)', paper=("dual-D", "D-eq"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
        place="the paragraph after Theorem 10.1",
        erratum="""After Theorem 10.1 the matrix integral XᵀẎ − YᵀẊ is said to come from the GL(n, ℝ)-symmetry
@@ -646,7 +646,7 @@ def complex_neumann_dual_lax_corrected(s):
     return {"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
 
-@claim("complex-neumann-momentum-algebra", paper=("u(1)", "W-eq"), kind="dim", exact_max_n=7,
+@claim("complex-neumann-momentum-algebra", encodes='the conservation of u(n)', paper=("u(1)", "W-eq"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
        place="the sentence after (16) §10",
        erratum="""After Theorem 10.3 the symmetries are said to give the conservation of the u(n) and u(1)ⁿ

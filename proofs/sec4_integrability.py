@@ -204,7 +204,7 @@ def manakov_flow_for_a_squared(s):
     }
 
 
-@claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), kind="lax", exact_max_n=6, exact_max_r={7: 1},
+@claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), unlabelled=("Theorem 4.3",), kind="lax", exact_max_n=6, exact_max_r={7: 1},
        exact_corank={7: 0},
        statement=r"\tfrac{d}{dt}\mathcal L_{man}(\lambda)=[\mathcal A_{man}(\lambda),\mathcal L_{man}(\lambda)],\quad "
                  r"\mathcal L_{man}=\Phi+\lambda A,\ \mathcal A_{man}=\mathbb A(\Phi)+\lambda B;\quad "
@@ -343,7 +343,7 @@ def bracket_gram_psi(s):
     return s.bracket(gram, lambda t: t.killing(t.Psi, t.Psi))
 
 
-@claim("gram-not-in-involution-with-psi", paper=("so(n)+so(r)", "SO(n)-inv"), kind="not", expect="nonzero",
+@claim("gram-not-in-involution-with-psi", paper=("so(n)+so(r)", "SO(n)-inv"), unlabelled=("Remark 4.2",), kind="not", expect="nonzero",
        fails_at=lambda n, r: r in (1, n),
        place="Remark 4.2, after Theorem 4.5",
        erratum="""Remark 4.2 after Theorem 4.5 (the functions (p_i, p_j) do not Poisson-commute with ⟨Ψ, Ψ⟩,

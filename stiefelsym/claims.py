@@ -323,6 +323,14 @@ class Claim:
     slips: tuple[str, ...] = ()
     #: why the equivariance reduction is valid although the claim reads coordinates (stated in reports)
     equivariance: str = ""
+    #: of a statement the paper makes in words, not as a formula (a size, "diffeomorphic to SO(n)"), the printed
+    #: words the claim's display is the tool's encoding of (det X = 1, an equation between sizes), in the ASCII
+    #: scripts of the reports' words; the report heads the display as that encoding; empty: a formula as printed
+    encodes: str = ""
+    #: the statements of the paper the claim checks that have no ``\label`` of their own and none inside them, by
+    #: the names the paper prints ("Theorem 4.3"); a statement with an equation's label inside it is named through
+    #: that label (:func:`stiefelsym.paperref.printed`)
+    unlabelled: tuple[str, ...] = ()
 
     @property
     def reviewed(self) -> bool:
@@ -753,7 +761,8 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
           sizes: SizeSpec | Iterable[tuple[int, int] | Size] | None = None, statement: str = "", realization: str = "standard",
           expect: str = "holds", exact_max_n: int | None = None, exact_max_r: dict[int, int] | None = None,
           exact_corank: dict[int, int] | None = None, fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = "",
-          free_max_r: int = 0, place: str = "", slips: Iterable[str] = ()):
+          free_max_r: int = 0, place: str = "", slips: Iterable[str] = (), encodes: str = "",
+          unlabelled: Iterable[str] = ()):
     """Register a claim.  The function's docstring (one sentence) goes into the report.
 
     ``paper``: the paper's equation labels the claim checks; a user's own claim may have none.
@@ -773,7 +782,12 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
     proof, a remark, a paragraph or an unnumbered display beside a correct numbered result): a phrase such as "the
     proof of Theorem 7.1", printed as "In the proof of Theorem 7.1 (involves: <labels>)".
     ``slips``: of an erratum, phrases naming further slips of the paper that its text reports in passing ("the
-    subscript I_{r+1} for I_{l+1} in (5) §8"), which make no statement fail."""
+    subscript I_{r+1} for I_{l+1} in (5) §8"), which make no statement fail.
+    ``encodes``: where the claim's display is the tool's encoding of words the paper prints rather than a formula it
+    prints (det X = 1 for "diffeomorphic to SO(n)", an equation between sizes for "the 2r × (n + r) matrix"), those
+    words, in the ASCII scripts of the reports (I_n, B^{-1}); the report heads the display as their encoding.
+    ``unlabelled``: the statements the claim checks that the paper prints without a label (and with no labelled
+    equation inside), by their printed names ("Theorem 4.3"): the report names them beside the labels."""
     if exact_max_n is None:
         exact_max_n = DIM_EXACT_MAX_N if kind == "dim" else IDENTITY_EXACT_MAX_N
     for name, value in (("statement", statement), ("erratum", erratum), ("equivariance", equivariance),
@@ -799,7 +813,8 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
                   fails_at=fails_at, erratum=" ".join(erratum.split()), equivariance=" ".join(equivariance.split()),
                   place=" ".join(place.split()) if isinstance(place, str) else place,
                   slips=tuple(slips) if not isinstance(slips, str) else (slips,),
-                  free_max_r=free_max_r)
+                  free_max_r=free_max_r, encodes=" ".join(encodes.split()),
+                  unlabelled=(unlabelled,) if isinstance(unlabelled, str) else tuple(unlabelled))
         if _ACTIVE[-1].reviewed or not _catalog_source(fn):
             # a catalog module imported by a user's file (for a helper) registers its claims with the catalog's
             # loading only, not as the file's own (a function that only names a catalog module is the file's)

@@ -142,7 +142,7 @@ def tt_escape(text: Any) -> str:
     font itself (``\\char92``, ``\\char123``, ``\\char125``): ``\\textbackslash`` and ``\\{`` are symbols of the
     OMS encoding, which has no typewriter shape (the font warning OMS/cmtt, and a glyph from another font); the tilde
     and the caret as characters (``\\char126``, ``\\char94``), not as accents."""
-    return (_tex_escape(str(text)).replace(r"\textbackslash{}", r"\char92{}")
+    return (_tex_escape_chars(bind_relations(str(text))).replace(r"\textbackslash{}", r"\char92{}")
             .replace(r"\{", r"\char123{}").replace(r"\}", r"\char125{}")
             .replace(r"\~{}", r"\char126{}").replace(r"\^{}", r"\char94{}"))
 
@@ -161,15 +161,162 @@ def tex_escape(text: Any) -> str:
 @functools.lru_cache(maxsize=1 << 14)
 def _tex_escape(text: str) -> str:
     """:func:`tex_escape` of a text without code spans (a pure function of the text: a report escapes the same
-    words, a statement, a reduction, a message, for many records)."""
+    words, a statement, a reduction, a message, for many records): the mathematics of the words
+    (:func:`math_runs`) in math mode, the rest in text mode."""
+    return _escape_with_math(bind_relations(text), {})
+
+
+def _escape_with_math(text: str, scripts: dict[str, str]) -> str:
+    """Text whose relations are bound already, its math runs in math mode; ``scripts`` maps a private-use
+    character of the text to the LaTeX math of a script it stands for (:func:`_ascii_scripts`)."""
     out = []
-    for kind, piece in _script_runs(bind_relations(text)):
+    for is_math, piece in math_runs(text, scripts):
+        if is_math:
+            math = _tex_math_run(piece, scripts)
+            out.append(r"\mbox{\ensuremath{" + math + "}}" if NBSP in piece and " " not in piece
+                       else r"\ensuremath{" + math + "}")
+        else:
+            out.append(_tex_escape_chars(piece, scripts))
+    return "".join(out)
+
+
+#: operators and groups of the paper's words, upright in math: (name, how it is set)
+_UPRIGHT_NAMES = {**{n: r"\mathop{\mathrm{%s}}\nolimits " % n for n in
+                     "det tr rank dim diag ad Ad span ddim Pf exp ker sgn".split()},
+                  **{n: r"\mathrm{%s}" % n for n in "SO GL Sp SU so gl sp su".split()}}
+#: ASCII characters a math run may contain besides letters and digits (no TeX special: _ ^ { } # % & $ \ ~)
+_MATH_ASCII = frozenset("()[]+-*/=<>|',")
+#: a binary operator or a relation standing alone between two math runs: "A + λIₙ", "XᵀP + PᵀX"
+_OPERATOR_TOKEN = frozenset("+−-=≤≥<>≠∈×·∧→↦⊂⊆⊥≅≈≡∘⊕⊗")
+_PUNCTUATION = ",;:.!?"
+
+
+def _math_char(ch: str, scripts: dict[str, str]) -> bool:
+    """Whether ``ch`` is a character of mathematics that text never has: a Greek letter, a script, a math symbol or
+    a letter of a math alphabet (ℝ, 𝔤, 𝒜), or a script of ASCII notation."""
+    return ch in scripts or ch in _SUP or ch in _SUB or (ord(ch) > 127 and ch not in _TEXT_ONLY and ch != NBSP
+                                                       and _unicode_math(ch) is not None)
+
+
+def _math_token(core: str, scripts: dict[str, str]) -> bool:
+    """Whether a word (its outer punctuation taken off) is mathematics: made of letters, digits, math characters
+    and ``()[]+-*/=<>|',`` only, every run of Latin letters one letter or an operator or group name (det, tr, SO),
+    and one Latin letter alone or a math character in it ("r", "2r", "Λ₁", "TₓO", "so(r", "X = ±1")."""
+    if not core or not all(c.isascii() and (c.isalnum() or c in _MATH_ASCII or c == ".") or c == NBSP
+                           or _math_char(c, scripts) for c in core):
+        return False
+    if core in _OPERATOR_TOKEN or core[0] in "<>" or core[-1] in "<>" or "<=" in core or ">=" in core:    # a lone operator, an angle bracket
+        return False
+    if re.search(r"(?<!\d)\.|\.(?!\d)", core.replace("...", "…")):   # a point only in a decimal number: not e.g
+        return False
+    runs = re.findall(r"[A-Za-z]+", core)
+    if any(len(w) > 1 and w not in _UPRIGHT_NAMES for w in runs):
+        return False
+    if re.fullmatch(r"\d+(?:\.\d+)?e[-+]?\d+", core):     # a number in E notation
+        return False
+    return any(len(w) == 1 for w in runs) or any(_math_char(c, scripts) for c in core)
+
+
+def _depth(text: str) -> int:
+    return text.count("(") + text.count("[") - text.count(")") - text.count("]")
+
+
+def math_runs(text: str, scripts: dict[str, str] | None = None) -> list[tuple[bool, str]]:
+    """Plain words cut into (is_math, piece): the mathematics of running text ("r", "2l ≤ n² − n", "Λ₁", "TₓO",
+    "A + λIₙ", "det X", "(X₀, P₀)") as math pieces, everything else as text.  A word is mathematics as
+    :func:`_math_token` says, except "a", "A" opening a sentence, and "s" after a number ("0.2 s"); math words
+    joined by a lone operator ("A + λIₙ", "e₁ ∧ p₁ + … + eᵣ ∧ pᵣ") are one piece, and so are an operator name
+    before a math word ("det X") and math words after a comma inside brackets ("(X₀, P₀)"); a bracket without its
+    partner in the piece is left in the text."""
+    scripts = scripts or {}
+    tokens = re.split(r"( +)", text)
+    words: list[list[Any]] = []              # [core, tail, math] of each word (tokens[2 i])
+    for i in range(0, len(tokens), 2):
+        token = tokens[i]
+        core = token.rstrip(_PUNCTUATION) if token not in ("...", "…", "⋯") else token
+        tail = token[len(core):]
+        math = _math_token(core, scripts)
+        if math and core in ("a", "A", "s"):
+            before = "".join(tokens[:i]).rstrip()
+            math = not (core == "a" or (core == "A" and (not before or before[-1] in ".!?"))
+                        or (core == "s" and re.search(r"\d$", before)))
+        words.append([core, tail, math])
+    def joining(w: list[Any]) -> bool:
+        return not w[1] and (w[0] in _OPERATOR_TOKEN or w[0] in ("...", "…", "⋯"))
+    for k, (core, tail, math) in enumerate(words):     # names before math words
+        if not math and not tail and core in _UPRIGHT_NAMES and k + 1 < len(words) and words[k + 1][2]:
+            words[k][2] = True
+    for k in range(len(words)):                         # lone operators (and ellipses) after a math word
+        prev, nxt = words[k - 1] if k else None, words[k + 1] if k + 1 < len(words) else None
+        if not words[k][2] and joining(words[k]) and prev and prev[2] and not prev[1] and nxt \
+                and (nxt[2] or joining(nxt) or re.fullmatch(r"\d+", nxt[0])):
+            words[k][2] = True
+            if re.fullmatch(r"\d+", nxt[0]):          # a number after an operator: "2r + 2"
+                nxt[2] = True
+    while words and words[-1][2] and joining(words[-1]):    # ... but not a chain that ends in an operator
+        words[-1][2] = False
+    for k in range(len(words) - 2, -1, -1):
+        if words[k][2] and joining(words[k]) and not words[k + 1][2]:
+            words[k][2] = False
+    out: list[tuple[bool, str]] = []
+
+    def put(is_math: bool, piece: str) -> None:
+        if piece:
+            out.append((is_math, out.pop()[1] + piece) if out and out[-1][0] == is_math else (is_math, piece))
+    depth = 0
+    for k, (core, tail, math) in enumerate(words):
+        if k:
+            prev, space = words[k - 1], tokens[2 * k - 1]
+            joined = prev[2] and math and (
+                not prev[1] and (prev[0] in _OPERATOR_TOKEN or core in _OPERATOR_TOKEN or prev[0] in _UPRIGHT_NAMES
+                                 or prev[0] in ("...", "…", "⋯") or core in ("...", "…", "⋯"))
+                or prev[1] in ("", ",") and depth > 0)
+            if joined:
+                put(True, (prev[1] if prev[1] else "") + space)
+            else:
+                put(False, prev[1] + space) if prev[2] else put(False, space)
+                depth = 0
+        if math:
+            put(True, core)
+            depth += _depth(core)
+        else:
+            put(False, core + tail)
+    if words and words[-1][2]:
+        put(False, words[-1][1])
+    return [piece for run in out for piece in (_bracketed(run[1]) if run[0] else [(False, run[1])]) if piece[1]]
+
+
+def _bracketed(piece: str) -> list[tuple[bool, str]]:
+    """A math piece with the brackets that have no partner in it taken out to the text: "(A" as "(" and "A"."""
+    head, tail = "", ""
+    while piece and piece[0] in "([" and _depth(piece) > 0:
+        head, piece = head + piece[0], piece[1:]
+    while piece and piece[-1] in ")]" and _depth(piece) < 0:
+        tail, piece = piece[-1] + tail, piece[:-1]
+    return [(False, head), (True, piece), (False, tail)] if piece.strip() else [(False, head + piece + tail)]
+
+
+def _tex_math_run(piece: str, scripts: dict[str, str]) -> str:
+    """The LaTeX math of a math piece of running text: names upright, scripts of ASCII notation as they are
+    set, the rest as :func:`tex_math` sets it."""
+    parts = re.split(r"([A-Za-z]{2,}|[\ue000-\uf8ff])", piece.replace(NBSP, " ").replace("...", "…"))
+    return "".join(scripts[part] if part in scripts else _UPRIGHT_NAMES.get(part, part) if i % 2 else tex_math(part)
+                   for i, part in enumerate(parts)).strip()
+
+
+def _tex_escape_chars(text: str, scripts: dict[str, str] | None = None) -> str:
+    """Text mode, character by character: specials escaped, each Unicode math character (and each script of
+    ``scripts``) in its own math group."""
+    out = []
+    for kind, piece in _script_runs(text):
         if kind == "sup":
             out.append(r"\ensuremath{^{" + "".join(_SUP[c] for c in piece) + "}}")
         elif kind == "sub":
             out.append(r"\ensuremath{_{" + "".join(_SUB[c] for c in piece) + "}}")
         elif piece in _TEX_SPECIAL:
             out.append(_TEX_SPECIAL[piece])
+        elif scripts and piece in scripts:
+            out.append(r"\ensuremath{" + scripts[piece] + "}")
         elif piece in "\n\t\r":
             out.append(" ")
         elif piece == NBSP:
@@ -683,6 +830,10 @@ def _ascii_scripts(text: str) -> str:
     text = bind_relations(math_idioms(text, tex=True))
     text = re.sub(r"(?<=\s)([<>])=(?=\s)", lambda m: "≤" if m.group(1) == "<" else "≥", text.replace(" ^ ", " ∧ "))
     text = re.sub(r"\S+", lambda m: _wedges(m.group(0)), text)
+    if "`" in text and _CODE_SPAN.search(text):
+        parts = _CODE_SPAN.split(text)           # text, code, text, code, ..., text
+        return "".join(r"\texttt{" + tt_escape(p) + "}" if i % 2 else _ascii_scripts(p) for i, p in enumerate(parts))
+    scripts: dict[str, str] = {}
     out, at = [], 0
     for m in _ASCII_SCRIPT.finditer(text):
         if m.start() == 0 or text[m.start() - 1] == " ":
@@ -691,8 +842,28 @@ def _ascii_scripts(text: str) -> str:
         if body is None:
             continue                      # left as it is written (escaped with the text around it)
         body = body.replace("-", "−")     # a script is mathematics: n-r, -1 with minus signs
-        out.append(tex_escape(text[at:m.start()]))
-        out.append(r"\ensuremath{" + m.group(1) + "{" + _ascii_scripts(body) + "}}")
+        mark = chr(0xE000 + len(scripts))  # a private-use character stands for the script in the words
+        scripts[mark] = m.group(1) + "{" + _script_math(body) + "}"
+        out.append(text[at:m.start()] + mark)
         at = m.end()
-    out.append(tex_escape(text[at:]))
+    out.append(text[at:])
+    return _escape_with_math("".join(out), scripts)
+
+
+def _script_math(body: str) -> str:
+    """The LaTeX math of the body of a script of ASCII notation (its own scripts set, names upright)."""
+    out, at = [], 0
+    for m in _ASCII_SCRIPT.finditer(body):
+        inner = _script_body(m.group(2))
+        if m.start() == 0 or inner is None:
+            continue
+        out.append(_script_math_plain(body[at:m.start()]) + m.group(1) + "{" + _script_math(inner) + "}")
+        at = m.end()
+    out.append(_script_math_plain(body[at:]))
     return "".join(out)
+
+
+def _script_math_plain(text: str) -> str:
+    text = re.sub(r"[#%&$~\\{}]", lambda m: "\\" + m.group(0) if m.group(0) in "#%&$" else "", text)
+    parts = re.split(r"([A-Za-z]{2,})", text)
+    return "".join(_UPRIGHT_NAMES.get(p, p) if i % 2 else tex_math(p) for i, p in enumerate(parts))

@@ -17,7 +17,7 @@ import tempfile
 from functools import cache
 from importlib import resources
 from pathlib import Path
-from typing import TypedDict
+from typing import NotRequired, TypedDict
 
 
 class PaperRef(TypedDict):
@@ -26,6 +26,7 @@ class PaperRef(TypedDict):
     number: str     # as printed: "12" for an equation, "5.3" for a theorem
     section: str    # the section's number as printed (the appendices are §9 and §10)
     page: str       # the page in the compiled paper
+    within: NotRequired[str]    # the statement it stands in when that has no label of its own: "Theorem 4.2"
 
 
 #: theorem-like environments of the paper and their printed names
@@ -84,6 +85,41 @@ def _environments(tex: str) -> dict[str, str]:
             env = next((e for e in reversed(stack) if e in THEOREM_NAMES or e.endswith("*")), None)
             out.setdefault(m.group(3), "display" if env and env.endswith("*")
                            else THEOREM_NAMES[env] if env else "")
+    return out
+
+
+#: theorem-like environments numbered by the theorem counter (shared, per section); a remark has its own
+SHARED_COUNTER = ("thm", "prop", "lem", "cor")
+
+
+def _nested_removed(body: str) -> str:
+    """``body`` without its nested environments (their labels are theirs, not the enclosing statement's)."""
+    prev = None
+    while prev != body:
+        prev, body = body, re.sub(r"\\begin\{([^}]*)\}(?:(?!\\begin\{).)*?\\end\{\1\}", "", body, flags=re.S)
+    return body
+
+
+def unlabelled_statements(tex: str) -> dict[str, list[str]]:
+    """The paper's theorem-like statements that have no ``\\label`` of their own, by the names the paper prints
+    ("Theorem 4.3", "Proposition 2.2"), each with the labels that stand inside it (the equations it states), in the
+    order of the paper.  A reader finds such a statement by its number only: a claim that checks one of its
+    equations names it too (:func:`printed`).  Numbered as the paper's ``\\newtheorem``s number them: Theorem,
+    Proposition, Lemma and Corollary share one counter per section, a Remark has its own."""
+    out: dict[str, list[str]] = {}
+    section, counts = 0, {"thm": 0, "remark": 0}
+    for m in re.finditer(r"\\section(\*?)\{|\\begin\{(" + "|".join(THEOREM_NAMES) + r")\}", tex):
+        if m.group(2) is None:
+            if not m.group(1):
+                section, counts = section + 1, {"thm": 0, "remark": 0}
+            continue
+        env = m.group(2)
+        counter = "thm" if env in SHARED_COUNTER else "remark"
+        counts[counter] += 1
+        end = tex.find("\\end{" + env + "}", m.end())
+        body = tex[m.end():end if end >= 0 else len(tex)]
+        if not re.search(r"\\label\{", _nested_removed(body)):
+            out[f"{THEOREM_NAMES[env]} {section}.{counts[counter]}"] = re.findall(r"\\label\{([^}]*)\}", body)
     return out
 
 
@@ -174,6 +210,10 @@ def build(tex_path: Path) -> dict[str, PaperRef]:
         if kind == "display":
             section = sections.get(key, section)
         out[key] = PaperRef(kind=kind, number=number, section=section, page=page)
+    for name, keys in unlabelled_statements(tex).items():
+        for key in keys:
+            if key in out:
+                out[key]["within"] = name
     return out
 
 
@@ -200,7 +240,7 @@ def printed(label: str) -> str:
     if ref is None:
         return f"({label})"
     if ref["kind"] == "equation":
-        return f"({ref['number']}) §{ref['section']}"
+        return f"({ref['number']}) §{ref['section']}" + (f" in {ref['within']}" if ref.get("within") else "")
     if ref["kind"] == "section":
         return f"§{ref['number']}"
     if ref["kind"] == "display":      # its page depends on the paper's build: named by its section

@@ -298,7 +298,7 @@ def test_registered_correction_records_carry_their_change_and_reports_show_it():
     assert row + "verified at the computed sizes** |" in md or row + "proved for all n, r** |" in md
     assert md == render_markdown(results)
     tex = render_latex(results)
-    assert r"in E, at the 2nd of its 2 places: $[\Phi, A]$ $\to$ $[A, \Phi]$ {\small (registered as: the operands of the second" in tex
+    assert r"in \ensuremath{E}, at the 2nd of its 2 places: $[\Phi, A]$ $\to$ $[A, \Phi]$ {\small (registered as: the operands of the second" in tex
 
 
 def test_a_hand_edited_change_of_a_correction_is_caught():

@@ -80,3 +80,18 @@ def test_the_reports_keep_the_keys_in_their_records():
                   method="exact", verdict="proved", seed=0, seconds=0.0, expected=True,
                   rerun="stiefelsym verify c --claims mine.py")      # a user's claim: its words are its own
     assert readable_results([mine])[0].title == "along (BB)"
+
+
+@pytest.mark.skipif(not PAPER.exists(), reason="the paper is not next to the repository")
+def test_a_statement_without_a_label_is_named_by_its_printed_number():
+    """Theorem 4.3 has no label, and Theorem 4.2 only that of its equation (man): a reader finds them by their
+    numbers.  An equation inside such a statement is printed with it ("(3) §4 in Theorem 4.2"); a claim names the
+    ones with no labelled equation inside by their printed names, each a statement of the paper without a label."""
+    from stiefelsym.reports.report import labels
+    unlabelled = paperref.unlabelled_statements(PAPER.read_text(encoding="utf-8"))
+    assert unlabelled["Theorem 4.3"] == [] and unlabelled["Theorem 4.2"] == ["man"]
+    assert "Theorem 4.4" not in unlabelled and "Proposition 4.6" in unlabelled
+    assert paperref.printed("man") == "(3) §4 in Theorem 4.2"
+    assert labels(["man"], ["Theorem 4.3"]) == "(3) §4 in Theorem 4.2 [man], Theorem 4.3"
+    declared = {name for c in load_catalog() for name in c.unlabelled}
+    assert "Theorem 4.3" in declared and declared <= {k for k, v in unlabelled.items() if not v}

@@ -559,7 +559,7 @@ def test_a_statement_that_something_does_not_hold_found_identically_zero_says_so
     for doc in (md, tex):
         assert "computed value below" not in doc
         assert "not identically zero, and exact computation finds it identically zero: the residual vanishes" in doc
-    assert r"What is wrong: It holds for r\nobreakspace{}\ensuremath{\ge}\nobreakspace{}2." in tex
+    assert r"What is wrong: It holds for \ensuremath{r \ge  2}." in tex
 
 
 def test_the_headline_counts_the_claims_proved_at_particular_r_by_their_r():
@@ -590,7 +590,7 @@ def test_a_proof_in_the_metric_realization_states_what_it_assumes_in_words():
     assert "it assumes (the metric realization): A symmetric positive definite; Λ is the solution of its " \
            "Sylvester equation" in line and "Π = 0 by uniqueness" in line and "Lambda:1" not in line.split("(XtX")[0]
     tex = render_latex([proof, result("metric", 3, 1, "exact", "proved")])
-    assert r"proved, assuming A symmetric positive definite; \ensuremath{\Lambda} is the solution" in tex
+    assert r"proved, assuming \ensuremath{A} symmetric positive definite; \ensuremath{\Lambda} is the solution" in tex
     plain = dict(data, summary=dict(data["summary"], assumes=[]))
     assert "assum" not in certificate_summary(result("metric", None, None, "free", "proved", certificate_data=plain))
 
@@ -700,7 +700,7 @@ def test_a_count_witness_to_check_by_hand_sets_its_scripts_in_the_pdf():
     rs = [result("neumann-lax", 1, 1, "exact", "fails", expected=False, witness={"small": small})]
     tex = render_latex(rs)
     line = next(x for x in tex.splitlines() if x.startswith(r"\textbf{A witness to check by hand:}"))
-    assert r"diag(I\ensuremath{_{n\ensuremath{-}r}}, B\ensuremath{^{\ensuremath{-}1}}): computed 2" in line
+    assert r"\ensuremath{\mathop{\mathrm{diag}}\nolimits (I_{n-r}, B^{-1})}: computed 2" in line
     assert r"\_\{" not in line and r"\^{}" not in line
     md = render_markdown(rs)
     assert "**A witness to check by hand:** at (n, r) = (1,1), the rows of V; printed: the size of" in md
@@ -736,7 +736,7 @@ def test_what_is_wrong_spells_the_greek_letters_as_letters():
     md, tex = render_markdown(rs), render_latex(rs)
     assert "What is wrong: with \\<Ψ, Ψ\\> and L(ν), Q(λ\\*); beta and Pit stay" in md
     line = next(x for x in tex.splitlines() if x.startswith("What is wrong: "))
-    assert r"\ensuremath{\Psi}" in line and r"L(\ensuremath{\nu})" in line and "beta and Pit stay" in line
+    assert r"\ensuremath{\Psi}" in line and r"\ensuremath{L(\nu )}" in line and "beta and Pit stay" in line
     assert "Psi" not in line.replace(r"\Psi", "")
 
 
@@ -819,7 +819,7 @@ def test_an_erratum_names_the_place_of_its_misprint_before_the_statements_it_inv
     assert "**Note for the authors.** In Theorem 7.1 [NEUMANN2], the statement as printed fails" in plain
     # a place in the paper's notation is set as such
     tex = render_latex(_misprinted("the general line 𝓘₂ₗ(λ) of (5) §8"))
-    assert r"in the general line \ensuremath{\mathcal{I}}\ensuremath{_{2l}}(\ensuremath{\lambda}) of (5) " in tex
+    assert r"in the general line \ensuremath{\mathcal{I}_{2l}(\lambda )} of (5) " in tex
 
 
 def test_a_list_of_reruns_shows_its_last_item_rather_than_one_more():
@@ -1232,7 +1232,7 @@ def test_an_encoding_of_words_of_the_paper_is_not_headed_as_printed():
             "to SO(n)”, not a formula of the paper):") in md
     assert "As printed:" in md
     tex = render_latex(rs)
-    assert r"Checked as (the tool's encoding of the printed words ``both V\ensuremath{_{n,n}}" in tex
+    assert r"Checked as (the tool's encoding of the printed words ``both \ensuremath{V_{n,n}}" in tex
 
 
 def test_one_notation_for_probabilities():
@@ -1244,3 +1244,35 @@ def test_one_notation_for_probabilities():
     r = result("prep", 4, 2, "modular", "checked", certificate="2 points (chosen so that the bound is <= 1e-30)")
     md = render_markdown([r])
     assert "bound is ≤ 10⁻³⁰) | 0 | 2.9·10⁻³⁴ |" in md and "e-3" not in md
+
+
+def test_the_encoding_of_printed_words_is_declared_at_the_claim():
+    """The words a display encodes (det X = 1 for "diffeomorphic to SO(n)", the size checks) are metadata of the
+    claim, declared at it in proofs/ (``@claim(..., encodes=...)``), and the report reads them from there: every
+    claim that declares them is headed as their encoding, and no claim without them is."""
+    from stiefelsym.claims import load_catalog
+    from stiefelsym.reports import report
+    catalog = load_catalog()
+    declared = {c.id: c.encodes for c in catalog if c.encodes}
+    assert declared["stiefel-top-rank"] == "both V_{n,n} and V_{n,n−1} are diffeomorphic to SO(n)"
+    assert len(declared) == 8 and all(catalog.get(cid).erratum for cid in declared)
+    assert report.encoded_statements() == declared and not hasattr(report, "ENCODED_STATEMENTS")
+
+
+def test_the_relations_of_a_certificate_are_named_in_the_paper_s_notation():
+    """A dimension-free certificate names the relations of its ideal by the engine's names (XtP+PtX, XtX, as the
+    results file keeps them); the report prints them as the paper writes them."""
+    from stiefelsym.reports.report import certificate_words, hypothesis_words
+    assert hypothesis_words("XtP+PtX") == "XᵀP + PᵀX = 0" and hypothesis_words("XtX") == "XᵀX = Iᵣ"
+    assert hypothesis_words("UtV-VtU") == "UᵀV = VᵀU" and hypothesis_words("XtAinvP+PtAinvX") == "XᵀA⁻¹P + PᵀA⁻¹X = 0"
+    assert hypothesis_words("UdtU+UtUd+VdtV+VtVd") == "U̇ᵀU + UᵀU̇ + V̇ᵀV + VᵀV̇ = 0"
+    assert hypothesis_words("res_left:R[lambda]") == "(λIₙ − A)(λIₙ − A)⁻¹ = Iₙ"
+    assert hypothesis_words("EleadtElead") == "EleadᵀElead = Iᵣ₋₁"
+    assert hypothesis_words("rho:Lambda:1") == "the Sylvester equation of Λ"
+    text = certificate_words("cofactor certificate of 6 residual entries (26 terms in the hypotheses XtP+PtX, XtX), "
+                             "re-checked")
+    assert text == ("cofactor certificate of 6 residual entries (26 terms in the hypotheses XᵀP + PᵀX = 0, XᵀX = Iᵣ), "
+                    "re-checked")
+    rs = [result("prep", None, None, "free", "proved", expected=True,
+                 certificate="cofactor certificate of 6 residual entries (26 terms in the hypotheses XtP+PtX, XtX)")]
+    assert "hypotheses XᵀP + PᵀX = 0" in render_markdown(rs) and "XtP+PtX" not in render_latex(rs, detail=True)

@@ -280,6 +280,9 @@ class ClaimResults:
         #: a claim of a claims file with the id of a catalog claim: shown as the file's claim, under its file
         self.shadows = bool(first.shadows)
         self.claims_file = claims_file_of(first)
+        #: the statements without a label of the paper the claim checks, by their printed names ("Theorem 4.3"),
+        #: for the catalog's claim only
+        self.unlabelled = [] if self.shadows or self.claims_file else unlabelled_statements(self.id)
         self.printed: list[Result] = []
         self.variants: dict[str, list[Result]] = {}
 
@@ -522,19 +525,21 @@ def case_name(r: Result) -> str:
     return f"{r.claim}{var}{size}-{r.method}"
 
 
-def labels(paper: Sequence[str]) -> str:
-    """The paper's numbers of a claim's labels, each label kept in brackets: "(4) §2 [cond_XP]";
-    a label the paper does not number (a user's own) is printed as "(label)"."""
-    return ", ".join(f"{paperref.printed(p)} [{p}]" if p in paperref.table() else f"({p})" for p in paper)
+def labels(paper: Sequence[str], unlabelled: Sequence[str] = ()) -> str:
+    """The paper's numbers of a claim's labels, each label kept in brackets: "(4) §2 [cond_XP]", "(3) §4 in Theorem 4.2
+    [man]"; a label the paper does not number (a user's own) is printed as "(label)"; then the statements without a
+    label the claim checks, by their printed names ("Theorem 4.3")."""
+    return ", ".join([f"{paperref.printed(p)} [{p}]" if p in paperref.table() else f"({p})" for p in paper]
+                     + list(unlabelled))
 
 
-def tex_labels(paper: Sequence[str]) -> str:
+def tex_labels(paper: Sequence[str], unlabelled: Sequence[str] = ()) -> str:
     """LaTeX of :func:`labels`: the paper's numbers, each label in small type (breakable)."""
     def one(p: str) -> str:
         key = r"{\scriptsize[\texttt{" + tex_escape(p).replace(r"\_", r"\_\allowbreak{}") + "}]}"
         return (tex_escape(paperref.printed(p)).replace(" ", "~") + " " + key) if p in paperref.table() \
             else tex_escape(f"({p})").replace(r"\_", r"\_\allowbreak{}")
-    return ", ".join(one(p) for p in paper)
+    return ", ".join([one(p) for p in paper] + [tex_escape(name).replace(" ", "~") for name in unlabelled])
 
 
 def _run_facts(meta: dict[str, Any]) -> list[str]:
@@ -1071,7 +1076,8 @@ def _md_results(rs: list[Result]) -> list[str]:
     """The runs of a claim, a row each; consecutive runs at fixed sizes that differ in nothing but their size (the
     same method, verdict, certificate, seed and bound, and no time shown) are one row naming their sizes."""
     cells = [[_md_cell(r.size), r.method, _md_verdict(r), format_seconds(r.seconds),
-              _md_cell(short(probability_words(quoted_value_words(r.certificate) if of_catalog(r) else r.certificate))
+              _md_cell(short(probability_words(certificate_words(quoted_value_words(r.certificate) if of_catalog(r)
+                                                                 else r.certificate)))
                        or "–"),
               str(r.seed if r.seed is not None else "–"), format_bound(r.false_pass_bound)] for r in rs]
     universe = [(r.n, r.r) for r in rs if r.n is not None]
@@ -1129,7 +1135,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
                                        else f"**{unexpected} verdicts not as expected.**"), ""]
     if errata:
         out += ["Fails as printed:", ""]
-        out += [f"- `{c.id}`{_md_escape(_shadow_tag(c))} {_placed(c, _md_escape(labels(c.paper)), lambda s: _md_escape(unicode_words(s)))}"
+        out += [f"- `{c.id}`{_md_escape(_shadow_tag(c))} {_placed(c, _md_escape(labels(c.paper, c.unlabelled)), lambda s: _md_escape(unicode_words(s)))}"
                 + _md_escape(_listed_correction(c, unicode_words, errata if not meta.get("claims_files") else ()))
                 for c in errata]
         out += [""]
@@ -1168,7 +1174,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     out += ["For each claim as printed: the verdict of the dimension-free method (all n, r "
             "at once), then the runs at fixed sizes (n, r) by verdict.", ""]
     out += _md_table(["claim", "paper", "§", "kind"] + present + ["status"],
-                     [[f"`{c.id}`", _md_cell(labels(c.paper)), "–" if c.shadows else c.section or "–", c.kind]
+                     [[f"`{c.id}`", _md_cell(labels(c.paper, c.unlabelled)), "–" if c.shadows else c.section or "–", c.kind]
                       + [str(k or "") for k in counts] + [status if status == "as expected"
                                                           else f"**{status}**"]
                       for c, counts, status in rows],
@@ -1189,7 +1195,7 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
 def _md_heading(c: ClaimResults) -> str:
     """A claim's heading: its id and its labels, led by the place of its misprint where it has one (the statement
     may be a numbered environment without a label, Proposition 4.6, which its labels alone would not name)."""
-    return f"### `{c.id}` {_placed(c, _md_escape(labels(c.paper)), lambda s: _md_escape(unicode_words(s)))}".rstrip()
+    return f"### `{c.id}` {_placed(c, _md_escape(labels(c.paper, c.unlabelled)), lambda s: _md_escape(unicode_words(s)))}".rstrip()
 
 
 def _md_claim(c: ClaimResults) -> list[str]:
@@ -1267,7 +1273,7 @@ def _erratum_note(c: ClaimResults, facts: dict[str, Any], escape=lambda s: s, co
     w = c.failures[0]
     where = (f"Appendix {c.section[1:]}, " if c.section.startswith("A") else f"§{c.section}, ") \
         if c.section and not c.shadows and not all(p in paperref.table() for p in c.paper) else ""
-    at = f"{where}{labels(c.paper)}".removesuffix(", ")
+    at = f"{where}{labels(c.paper, c.unlabelled)}".removesuffix(", ")
     if c.place:
         # the misprint sits beside the labelled statements (in a proof, a remark, a paragraph): named first, so
         # that the authors do not look for it in a correct theorem
@@ -1309,25 +1315,32 @@ def _errata_body(claims: list[ClaimResults], escape: Callable[[str], str], errat
     return out
 
 
-#: errata whose display is the tool's encoding of words of the paper (a size read as an equation between sizes,
-#: "diffeomorphic to SO(n)" read as det X = 1), not a formula the paper prints: their display is headed as the
-#: encoding, beside the words the paper prints (in the ASCII scripts of :func:`unicode_words` and :func:`tex_words`)
-ENCODED_STATEMENTS = {
-    "stiefel-top-rank": "both V_{n,n} and V_{n,n−1} are diffeomorphic to SO(n)",
-    "neumann2-h-size": "Let h = Ψ(X_0, P_0), v = X_0 X_0^T",
-    "spectral-curve-identity-size": "|a(λ)𝓛*_neum(λ) − w I_n|",
-    "manakov-curve-identity-size": "|a(λ)𝓛*_man(λ) − w I_n|",
-    "vvb-left-factor-size": "left multiplication by the block matrix diag(I_{n-r}, B^{-1})",
-    "vv-printed-shape": "the 2r × (n + r) matrix",
-    "double-neumann-symmetry-group": "R ∈ GL(n, ℝ)",
-    "complex-neumann-momentum-algebra": "the conservation of u(n)",
-}
+@functools.lru_cache(maxsize=1)
+def _catalog_claims() -> dict[str, Any]:
+    """The paper's catalog's claims by id, for the metadata the report reads from a claim itself."""
+    from stiefelsym.claims import load_catalog
+    return {c.id: c for c in load_catalog()}
+
+
+def unlabelled_statements(cid: str) -> list[str]:
+    """The statements of the paper a catalog claim checks that have no label, by their printed names
+    (``@claim(..., unlabelled=...)``): "Theorem 4.3"."""
+    c = _catalog_claims().get(cid)
+    return list(c.unlabelled) if c is not None else []
+
+
+def encoded_statements() -> dict[str, str]:
+    """The catalog's errata whose display is the tool's encoding of words of the paper (a size read as an equation
+    between sizes, "diffeomorphic to SO(n)" read as det X = 1), not a formula the paper prints, each with those words
+    as its claim declares them (``@claim(..., encodes=...)``, in the ASCII scripts of :func:`unicode_words` and
+    :func:`tex_words`): their display is headed as the encoding, beside the printed words."""
+    return {cid: c.encodes for cid, c in _catalog_claims().items() if c.encodes}
 
 
 def statement_heading(c: ClaimResults, words: Callable[[str], str]) -> str:
     """The words over an erratum's display: "As printed:", or, where the display is the tool's encoding of words of
-    the paper (:data:`ENCODED_STATEMENTS`), that it is, with those words (``words`` sets them)."""
-    printed = ENCODED_STATEMENTS.get(c.id) if not (c.shadows or c.claims_file) else None
+    the paper (:func:`encoded_statements`), that it is, with those words (``words`` sets them)."""
+    printed = encoded_statements().get(c.id) if not (c.shadows or c.claims_file) else None
     if printed is None:
         return "As printed:"
     return f"Checked as (the tool's encoding of the printed words “{words(printed)}”, not a formula of the paper):"
@@ -1717,7 +1730,8 @@ def _tex_results(rs: list[Result]) -> list[str]:
         out.append(" & ".join([
             tex_escape(r.size), tex_escape(r.method), _tex_verdict(r),
             tex_escape(format_seconds(r.seconds)),
-            re.sub(r"([*+,=])", r"\1\\allowbreak{}", tex_words(short(quoted_value_words(r.certificate) if of_catalog(r) else r.certificate, 120) or "--")),
+            re.sub(r"([*+,=])", r"\1\\allowbreak{}", tex_words(short(certificate_words(
+                quoted_value_words(r.certificate) if of_catalog(r) else r.certificate), 120) or "--")),
             str(r.seed if r.seed is not None else "--"), _tex_bound(r.false_pass_bound)]) + r"\\")
     return out + [r"\bottomrule", r"\end{longtable}", "}"]
 
@@ -2189,7 +2203,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
     if errata and not detail:
         out += [tex_escape("Fails as printed:")]
         out += _tex_items([r"\texttt{" + tex_escape(c.id) + "}" + tex_escape(_shadow_tag(c)) + " "
-                           + _placed(c, tex_labels(c.paper), tex_words)
+                           + _placed(c, tex_labels(c.paper, c.unlabelled), tex_words)
                            + _listed_correction(c, tex_words, errata if not meta.get("claims_files") else ())
                            for c in errata])
     if not detail:
@@ -2252,7 +2266,7 @@ def _tex_claim_table(claims: list[ClaimResults]) -> list[str]:
             r"\midrule", r"\endhead"]
     for c, counts, status in rows:
         out.append(" & ".join([r"\texttt{" + tex_escape(c.id).replace("-", r"-\allowbreak{}") + "}",
-                               tex_labels(c.paper),
+                               tex_labels(c.paper, c.unlabelled),
                                tex_escape("--" if c.shadows else c.section or "--")]
                               + [tex_escape(str(k or "")) for k in counts]
                               + [tex_escape(status) if status == "as expected"
@@ -2375,7 +2389,7 @@ def _brief_reason(message: str | None) -> str:
 
 
 def _tex_claim_heading(c: ClaimResults) -> str:
-    heading = r"\subsection*{\texttt{" + tex_escape(c.id) + "} " + _placed(c, tex_labels(c.paper), tex_words) + "}"
+    heading = r"\subsection*{\texttt{" + tex_escape(c.id) + "} " + _placed(c, tex_labels(c.paper, c.unlabelled), tex_words) + "}"
     # a claims file's claim with a catalog claim's id says whose it is, wherever its heading stands
     return heading + ("\n" + r"\textbf{" + tex_escape(shadow_words(c)) + "}\n" if c.shadows else "")
 
@@ -2434,6 +2448,67 @@ def free_assumptions(r: Result) -> list[str]:
     return out
 
 
+#: the engine's letter names in the relations of a certificate: (pattern, the paper's notation), in this order
+_LETTER_PARTS = ((r"inv$", "⁻¹"), (r"t$", "ᵀ"), (r"d$", "\u0307"))
+_LETTER_SCRIPTS = str.maketrans("0123456789r", "₀₁₂₃₄₅₆₇₈₉ᵣ")
+_SIZE_IDENTITY = {"n": "Iₙ", "r": "Iᵣ", "1": "1", "r-1": "Iᵣ₋₁"}
+
+
+def _letter_words(name: str) -> str:
+    """An engine letter in the paper's notation: Xt as Xᵀ, Ainv as A⁻¹, Udt as U̇ᵀ, E1 as E₁, Ert as Eᵣᵀ."""
+    tail = ""
+    changed = True
+    while changed:
+        changed = False
+        for pattern, mark in _LETTER_PARTS:
+            m = re.search(pattern, name)
+            if m and m.start() > 0 and (mark != "\u0307" or re.fullmatch(r"D?[A-Z]", name[:m.start()])):
+                name, tail = name[:m.start()], mark + tail
+                changed = True
+                break
+    if re.fullmatch(r"E(\d|r)", name):
+        name = "E" + name[1:].translate(_LETTER_SCRIPTS)
+    return name + tail
+
+
+def hypothesis_words(name: str) -> str:
+    """A relation of the ideal of a dimension-free certificate as the paper writes it, from the name the engine and
+    the results file give it: "XtP+PtX" as "XᵀP + PᵀX = 0", "XtX" as "XᵀX = Iᵣ", "UtV-VtU" as "UᵀV = VᵀU",
+    "res_left:R[lambda]" as "(λIₙ − A)(λIₙ − A)⁻¹ = Iₙ", "rho:Lambda:1" as "the Sylvester equation of Λ"; a name of no
+    fixed relation as it is."""
+    from stiefelsym.certificate_check import HYPOTHESES
+    kind, _, arg = name.partition(":")
+    m = re.fullmatch(r"R\[(-?)(\w+)\]", arg)
+    if kind in ("res_left", "res_right") and m:
+        mu = ("−" if m.group(1) else "") + greek_words(m.group(2))
+        shifted = f"({mu}Iₙ − A)"
+        pair = f"{shifted}{shifted}⁻¹" if kind == "res_left" else f"{shifted}⁻¹{shifted}"
+        return f"{pair} = Iₙ"
+    sylvester = re.fullmatch(r"(\w+):\d+", arg)
+    if kind == "rho" and sylvester:         # the relation of a multiplier that solves a Sylvester equation
+        return f"the Sylvester equation of {greek_words(sylvester.group(1))}"
+    if name not in HYPOTHESES:
+        return name
+    rows, _cols, terms = HYPOTHESES[name]
+
+    def side(ts: list) -> str:
+        words = ["".join(map(_letter_words, w)) or _SIZE_IDENTITY.get(rows, "I") for _, w in ts]
+        return " + ".join(words) if words else "0"
+    plus = [t for t in terms if int(t[0]) > 0]
+    minus = [t for t in terms if int(t[0]) < 0]
+    return f"{side(plus)} = {side(minus)}"
+
+
+_HYPOTHESES_LIST = re.compile(r"(\bin the hypotheses )([^()]*(?:\[[^\]]*\][^()]*)*)\)")
+
+
+def certificate_words(text: str) -> str:
+    """A record's certificate with the relations it names in the paper's notation (:func:`hypothesis_words`):
+    "26 terms in the hypotheses XtP+PtX, XtX" as "26 terms in the hypotheses XᵀP + PᵀX = 0, XᵀX = Iᵣ"."""
+    return _HYPOTHESES_LIST.sub(lambda m: m.group(1) + ", ".join(hypothesis_words(h.strip())
+                                                                 for h in m.group(2).split(", ")) + ")", text or "")
+
+
 def certificate_summary(r: Result) -> str:
     """One line on a dimension-free proof's cofactor certificate (its terms are in results.json)."""
     data = r.certificate_data
@@ -2457,7 +2532,8 @@ def certificate_summary(r: Result) -> str:
     sizes = ", ".join(map(str, per[:12])) + (", ..." if len(per) > 12 else "")
     return (f"Cofactor certificate ({_method_name(r.method)}): {sm['terms']} terms over {entries} (per entry: {sizes}), "
             f"in {len(sm['hypotheses'])} relation{'' if len(sm['hypotheses']) == 1 else 's'} of the ideal "
-            f"({', '.join(sm['hypotheses'])}, as results.json names them); {checked}; the terms are in results.json")
+            f"({', '.join(map(hypothesis_words, sm['hypotheses']))}); {checked}; the terms are in the results file "
+            "(results.json, which names these relations by the engine's names)")
 
 
 def certificate_summaries(records: list[Result]) -> dict[str, str]:
