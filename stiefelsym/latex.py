@@ -180,12 +180,14 @@ def _escape_with_math(text: str, scripts: dict[str, str]) -> str:
     return "".join(out)
 
 
-#: operators and groups of the paper's words, upright in math: (name, how it is set)
+#: the operators of the paper's words, upright in math, and its groups and Lie algebras, in math italic as the paper
+#: sets them ($SO(n)$, $so(r)$): (name, how it is set)
 _UPRIGHT_NAMES = {**{n: r"\mathop{\mathrm{%s}}\nolimits " % n for n in
                      "det tr rank dim diag ad Ad span ddim Pf exp ker sgn".split()},
-                  **{n: r"\mathrm{%s}" % n for n in "SO GL Sp SU so gl sp su".split()}}
-#: ASCII characters a math run may contain besides letters and digits (no TeX special: _ ^ { } # % & $ \ ~)
-_MATH_ASCII = frozenset("()[]+-*/=<>|',")
+                  **{n: n for n in "SO GL Sp SU so gl sp su".split()}}
+#: ASCII characters a math run may contain besides letters and digits (no TeX special: _ ^ { } # % & $ \ ~; no quote,
+#: which math mode reads as a prime: "'G_I(V)^2'" would be a double superscript)
+_MATH_ASCII = frozenset("()[]+-*/=<>|,")
 #: a binary operator or a relation standing alone between two math runs: "A + λIₙ", "XᵀP + PᵀX"
 _OPERATOR_TOKEN = frozenset("+−-=≤≥<>≠∈×·∧→↦⊂⊆⊥≅≈≡∘⊕⊗")
 _PUNCTUATION = ",;:.!?"
@@ -236,10 +238,11 @@ def math_runs(text: str, scripts: dict[str, str] | None = None) -> list[tuple[bo
         core = token.rstrip(_PUNCTUATION) if token not in ("...", "…", "⋯") else token
         tail = token[len(core):]
         math = _math_token(core, scripts)
-        if math and core in ("a", "A", "s"):
-            before = "".join(tokens[:i]).rstrip()
-            math = not (core == "a" or (core == "A" and (not before or before[-1] in ".!?"))
-                        or (core == "s" and re.search(r"\d$", before)))
+        word = core.strip("()[]")
+        if math and word in ("a", "A", "s"):    # an article, a sentence's first word, a unit of seconds
+            before = "".join(tokens[:i]).rstrip() + core[:len(core) - len(core.lstrip("(["))]
+            math = not (word == "a" or (word == "A" and (not before or before[-1] in ".!?"))
+                        or (word == "s" and re.search(r"\d$", before)))
         words.append([core, tail, math])
     def joining(w: list[Any]) -> bool:
         return not w[1] and (w[0] in _OPERATOR_TOKEN or w[0] in ("...", "…", "⋯"))
@@ -299,6 +302,7 @@ def _bracketed(piece: str) -> list[tuple[bool, str]]:
 def _tex_math_run(piece: str, scripts: dict[str, str]) -> str:
     """The LaTeX math of a math piece of running text: names upright, scripts of ASCII notation as they are
     set, the rest as :func:`tex_math` sets it."""
+    piece = re.sub(r"(?<=[^\W_]|[)\]}])\*", "^{*}", piece)       # T*V, 𝒜*ₘₐₙ, λ*: a star is a superscript
     parts = re.split(r"([A-Za-z]{2,}|[\ue000-\uf8ff])", piece.replace(NBSP, " ").replace("...", "…"))
     return "".join(scripts[part] if part in scripts else _UPRIGHT_NAMES.get(part, part) if i % 2 else tex_math(part)
                    for i, part in enumerate(parts)).strip()

@@ -183,7 +183,7 @@ def test_the_ascii_idioms_of_the_catalog_s_prose_are_set_in_the_paper_s_notation
     md = unicode_words(text)
     assert md == "𝓛*_neum(λ) is 2r × 2r; i ≠ j; 1≤i≤r; Θ(X₀, P₀); (n + r) × 2r; a<=b; the point x on x = 0"
     tex = tex_words(text)
-    assert r"\ensuremath{\mathcal{L}*_{neum}(\lambda )}" in tex and r"\_neum" not in tex
+    assert r"\ensuremath{\mathcal{L}^{*}_{neum}(\lambda )}" in tex and r"\_neum" not in tex
     assert r"\ensuremath{2r \times  2r}" in tex and r"\mbox{\ensuremath{i \neq  j}}" in tex
     assert r"\ensuremath{1\le i\le r}" in tex and r"\ensuremath{\Theta (X_{0}, P_{0})}" in tex
     assert r"the point \ensuremath{x} on \mbox{\ensuremath{x = 0}}" in tex
@@ -197,7 +197,7 @@ def test_subscripts_of_lie_algebras_and_index_pairs_and_cross_products_in_the_pd
     text = "eta_so(r) = 0, Psi_so(n-r), Psi_ij, (P^T P)_ij, e_3 x de_3/dt, kernel_of x, H_neum,0"
     tex = tex_words(text)
     assert r"\_" not in tex.replace(r"kernel\_of", "")
-    assert r"\eta _{\mathrm{so}(r)}" in tex and r"\ensuremath{\Psi _{ij}}" in tex and r"\ensuremath{\times} de" in tex
+    assert r"\eta _{so(r)}" in tex and r"\ensuremath{\Psi _{ij}}" in tex and r"\ensuremath{\times} de" in tex
     assert r"\ensuremath{H_{neum,0}}" in tex      # the paper's named subscripts after any letter, not only 𝓛*
     assert unicode_words(text) == "η_so(r) = 0, Ψ_so(n-r), Ψ_ij, (Pᵀ P)_ij, e₃ × de₃/dt, kernel_of x, H_neum,0"
 
@@ -278,3 +278,18 @@ def test_typewriter_text_takes_its_backslash_and_braces_from_the_typewriter_font
     assert tt_escape("\\ref{No} a~b^2") == r"\char92{}ref\char123{}No\char125{} a\char126{}b\char94{}2"
     assert tex_escape("Printed `{\\ref{No}` here") == r"Printed \texttt{\char123{}\char92{}ref\char123{}No\char125{}} here"
     assert tex_escape("{\\ref}") == r"\{\textbackslash{}ref\}"
+
+
+def test_mathematics_of_running_text_is_set_in_math_mode():
+    """The referee's P4: letters, scripts and Greek letters of prose were set in the text font (Λ1, TₓO, I_{r+1}, the
+    r of "r = 2").  Each formula of running text is one math group; words, numbers and code stay text, a quote is
+    never read as a prime."""
+    from stiefelsym.latex import math_runs, tex_escape, tex_words
+    assert tex_escape("the bracket Λ₁ on TₓO") == r"the bracket \ensuremath{\Lambda _{1}} on \ensuremath{T_{x}O}"
+    assert tex_words("the subscript I_{r+1} for I_{l+1}") == r"the subscript \ensuremath{I_{r+1}} for \ensuremath{I_{l+1}}"
+    assert tex_words("O(n) in place of SO(n): det X = ±1, both") == \
+        r"\ensuremath{O(n)} in place of \ensuremath{SO(n)}: \ensuremath{\mathop{\mathrm{det}}\nolimits  X = \pm 1}, both"
+    assert tex_words("h = Φ(X_0, P_0) in place of Ψ(X₀, P₀)") == \
+        r"\ensuremath{h = \Phi (X_{0}, P_{0})} in place of \ensuremath{\Psi (X_{0}, P_{0})}"
+    assert [m for m, _ in math_runs("A claim in 0.2 s, e.g. 2r-integrals at 3404 runs")] == [False]
+    assert tex_words("'G_I(V)^2', 'a'").count("'") == 4 and "^{2}'" not in tex_words("'G_I(V)^2', 'a'")
