@@ -1276,3 +1276,14 @@ def test_the_relations_of_a_certificate_are_named_in_the_paper_s_notation():
     rs = [result("prep", None, None, "free", "proved", expected=True,
                  certificate="cofactor certificate of 6 residual entries (26 terms in the hypotheses XtP+PtX, XtX)")]
     assert "hypotheses XᵀP + PᵀX = 0" in render_markdown(rs) and "XtP+PtX" not in render_latex(rs, detail=True)
+
+
+def test_the_real_form_of_a_complex_chart_is_named_in_the_paper_s_notation():
+    """The chart of a complex Stiefel variety is described by the engine as acting by realify(g) Z realify(h)^T on
+    (Z, Zdot): the report writes g_ℝ Z h_ℝᵀ on (Z, Ż), and says what g_ℝ is."""
+    from stiefelsym.reports.report import engine_words
+    from stiefelsym.latex import unicode_words
+    text = unicode_words(engine_words("the point (Z, Zdot) of TW(n, r), realified, generic: real (g, h) act on it as "
+                                      "realify(g) Z realify(h)^T and leave it anywhere"))
+    assert "realify" not in text and "Zdot" not in text
+    assert "(Z, Z\u0307)" in text and "g_ℝ Z h_ℝᵀ (g_ℝ: the complex matrix g written as a real one)" in text

@@ -584,9 +584,14 @@ _ENGINE_IDIOMS = (
     (re.compile(r"(?<![\w^])R\^(n|r)\b"), r"ℝ^\1"),                          # the spaces ℝⁿ, ℝʳ
     (re.compile(r"\b(T\*?)?([VW])\(([nr]|\d+), ([nr]|\d+)\)"), r"\1\2_{\3,\4}"),  # V_{n,r}, T*V_{n,n}, TW_{n,r}
     (re.compile(r"(?<=[\w)\]]) - (?=[\w(\[])"), " − "),                         # a minus sign: n − r, I − S
-    # a rank of 0 needs no lower bound: "rank ≥ 0" is no evidence, and is not printed as such
+    # a rank of 0 needs no lower bound: "rank ≥ 0" is no evidence, and is not printed as such (the records of
+    # earlier runs; the engine now says so itself)
     (re.compile(r"\brank 0 at an exact rational point \(rank >= 0 over the function field\)(?= and|;)"),
      "no lower bound (none is needed: no rank is below 0)"),
+    (re.compile(r"\b([XPYQZ])dot\b"), "\\1\u0307"),                                 # Zdot as Ż
+    # the real form of a complex matrix acting on a realified point: realify(g) as g_ℝ, said once
+    (re.compile(r"realify\((\w)\) (\w) realify\((\w)\)(\^T|ᵀ)"),
+     r"\1_ℝ \2 \3_ℝ^T (\1_ℝ: the complex matrix \1 written as a real one)"),
 )
 
 
