@@ -212,11 +212,14 @@ def _math_token(core: str, scripts: dict[str, str]) -> bool:
     if re.search(r"(?<!\d)\.|\.(?!\d)", core.replace("...", "…")):   # a point only in a decimal number: not e.g
         return False
     runs = re.findall(r"[A-Za-z]+", core)
-    if any(len(w) > 1 and w not in _UPRIGHT_NAMES for w in runs):
+    scripted = any(_math_char(c, scripts) for c in core)
+    # a product of matrices written together (PXᵀ, XXᵀ) is a run of capitals: mathematics where a math character
+    # says so (UNEXPECTED, LA1 are words and names)
+    if any(len(w) > 1 and w not in _UPRIGHT_NAMES and not (scripted and w.isupper() and len(w) <= 4) for w in runs):
         return False
     if re.fullmatch(r"\d+(?:\.\d+)?e[-+]?\d+", core):     # a number in E notation
         return False
-    return any(len(w) == 1 for w in runs) or any(_math_char(c, scripts) for c in core)
+    return any(len(w) == 1 for w in runs) or scripted
 
 
 def _depth(text: str) -> int:
@@ -272,6 +275,7 @@ def math_runs(text: str, scripts: dict[str, str] | None = None) -> list[tuple[bo
             prev, space = words[k - 1], tokens[2 * k - 1]
             joined = prev[2] and math and (
                 not prev[1] and (prev[0] in _OPERATOR_TOKEN or core in _OPERATOR_TOKEN or prev[0] in _UPRIGHT_NAMES
+                                 or prev[0] in ("Σ", "∑")
                                  or prev[0] in ("...", "…", "⋯") or core in ("...", "…", "⋯"))
                 or prev[1] in ("", ",") and depth > 0)
             if joined:

@@ -21,7 +21,7 @@ STATEMENTS = {
 @pytest.mark.parametrize("raw, tex", [
     ("a_b", r"a\_b"), ("#1", r"\#1"), ("50%", r"50\%"), ("A&B", r"A\&B"), ("~", r"\~{}"),
     ("x^2", r"x\^{}2"), ("{b}", r"\{b\}"), ("\\foo", r"\textbackslash{}foo"), ("$5", r"\$5"),
-    ("a<b", r"\ensuremath{a<b}"), ("Φ", r"\ensuremath{\Phi}"), ("XXᵀ", r"XX\ensuremath{^{T}}"),
+    ("a<b", r"\ensuremath{a<b}"), ("Φ", r"\ensuremath{\Phi}"), ("XXᵀ", r"\ensuremath{XX^{T}}"),
     ("≤ ½", r"\ensuremath{\le} \ensuremath{\tfrac12}"), ("Jovanović", r"Jovanovi\'{c}"),
     ("Božidar", r"Bo\v{z}idar"), ("𝔄", r"\ensuremath{\mathfrak{A}}"), ("ℝ", r"\ensuremath{\mathbb{R}}"),
     ("x₁₂", r"\ensuremath{x_{12}}"), ("§5", r"\ensuremath{\S}5"), ("ε", r"\ensuremath{\varepsilon}"),
@@ -292,4 +292,6 @@ def test_mathematics_of_running_text_is_set_in_math_mode():
     assert tex_words("h = Φ(X_0, P_0) in place of Ψ(X₀, P₀)") == \
         r"\ensuremath{h = \Phi (X_{0}, P_{0})} in place of \ensuremath{\Psi (X_{0}, P_{0})}"
     assert [m for m, _ in math_runs("A claim in 0.2 s, e.g. 2r-integrals at 3404 runs")] == [False]
+    assert tex_escape("Σ pᵢ ∧ eᵢ = PXᵀ − XPᵀ, UNEXPECTED") == \
+        r"\ensuremath{\Sigma  p_{i} \wedge  e_{i} = PX^{T} - XP^{T}}, UNEXPECTED"
     assert tex_words("'G_I(V)^2', 'a'").count("'") == 4 and "^{2}'" not in tex_words("'G_I(V)^2', 'a'")

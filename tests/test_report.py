@@ -1273,6 +1273,8 @@ def test_the_relations_of_a_certificate_are_named_in_the_paper_s_notation():
                              "re-checked")
     assert text == ("cofactor certificate of 6 residual entries (26 terms in the hypotheses XᵀP + PᵀX = 0, XᵀX = Iᵣ), "
                     "re-checked")
+    assert certificate_words("hypotheses XtX; re-checked") == "hypotheses XᵀX = Iᵣ; re-checked"
+    assert certificate_words("(1 term in the hypotheses (none)), re-checked") == "(1 term in the hypotheses (none)), re-checked"
     rs = [result("prep", None, None, "free", "proved", expected=True,
                  certificate="cofactor certificate of 6 residual entries (26 terms in the hypotheses XtP+PtX, XtX)")]
     assert "hypotheses XᵀP + PᵀX = 0" in render_markdown(rs) and "XtP+PtX" not in render_latex(rs, detail=True)

@@ -2504,14 +2504,14 @@ def hypothesis_words(name: str) -> str:
     return f"{side(plus)} = {side(minus)}"
 
 
-_HYPOTHESES_LIST = re.compile(r"(\bin the hypotheses )([^()]*(?:\[[^\]]*\][^()]*)*)\)")
+_HYPOTHESES_LIST = re.compile(r"(\bhypotheses )([^();]*(?:\[[^\]]*\][^();]*)*)(?=[);])")
 
 
 def certificate_words(text: str) -> str:
     """A record's certificate with the relations it names in the paper's notation (:func:`hypothesis_words`):
     "26 terms in the hypotheses XtP+PtX, XtX" as "26 terms in the hypotheses XᵀP + PᵀX = 0, XᵀX = Iᵣ"."""
     return _HYPOTHESES_LIST.sub(lambda m: m.group(1) + ", ".join(hypothesis_words(h.strip())
-                                                                 for h in m.group(2).split(", ")) + ")", text or "")
+                                                                 for h in m.group(2).split(", ")), text or "")
 
 
 def certificate_summary(r: Result) -> str:
