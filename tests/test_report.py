@@ -1289,3 +1289,13 @@ def test_the_real_form_of_a_complex_chart_is_named_in_the_paper_s_notation():
                                       "realify(g) Z realify(h)^T and leave it anywhere"))
     assert "realify" not in text and "Zdot" not in text
     assert "(Z, Z\u0307)" in text and "g_ℝ Z h_ℝᵀ (g_ℝ: the complex matrix g written as a real one)" in text
+
+
+def test_a_statement_without_a_label_is_named_once_beside_an_erratum():
+    """The place of a misprint that names the statement ("in Proposition 4.6 and its proof") is not followed by
+    the same name among the labels it involves; a claim that holds lists it with its labels."""
+    tex = render_markdown([result("invariant-metrics", 4, 2, "exact", "fails", expected=True,
+                                  place="Proposition 4.6 and its proof"),
+                           result("manakov-lax", 3, 1, "exact", "proved")])
+    assert "Proposition 4.6)" not in tex and "in Proposition 4.6 and its proof" in tex
+    assert any(line.startswith("### `manakov-lax`") and line.endswith(", Theorem 4.3") for line in tex.splitlines())

@@ -282,7 +282,7 @@ class ClaimResults:
         self.claims_file = claims_file_of(first)
         #: the statements without a label of the paper the claim checks, by their printed names ("Theorem 4.3"),
         #: for the catalog's claim only
-        self.unlabelled = [] if self.shadows or self.claims_file else unlabelled_statements(self.id)
+        self._unlabelled = [] if self.shadows or self.claims_file else unlabelled_statements(self.id)
         self.printed: list[Result] = []
         self.variants: dict[str, list[Result]] = {}
 
@@ -313,6 +313,12 @@ class ClaimResults:
         """Where in the paper the misprint sits, as the erratum's records give it ("the proof of Theorem 7.1"); ""
         when it is the statement the labels name."""
         return next((r.place for r in self.failures if r.place), "")
+
+    @property
+    def unlabelled(self) -> list[str]:
+        """The statements without a label the claim checks ("Theorem 4.3"), but one the place of its misprint names
+        already ("in Proposition 4.6 and its proof", not again among the labels it involves)."""
+        return [name for name in self._unlabelled if not re.search(rf"\b{re.escape(name)}\b", self.place)]
 
     @property
     def own(self) -> bool:
