@@ -234,7 +234,7 @@ def math_runs(text: str, scripts: dict[str, str] | None = None) -> list[tuple[bo
     before a math word ("det X") and math words after a comma inside brackets ("(X₀, P₀)"); a bracket without its
     partner in the piece is left in the text."""
     scripts = scripts or {}
-    tokens = re.split(r"( +)", text)
+    tokens = re.split(r"([ \u00a0]+)", text)     # a no-break space (a bound relation) separates words too
     words: list[list[Any]] = []              # [core, tail, math] of each word (tokens[2 i])
     for i in range(0, len(tokens), 2):
         token = tokens[i]
