@@ -581,7 +581,7 @@ def test_cli_json_format_and_partial_run_writes_nothing(tmp_path, monkeypatch):
 @pytest.mark.parametrize("args, message", [
     (["no-such-claim"], "unknown claim"),
     (["normal-flow", "--method", "auto"], "unknown method 'auto'"),
-    (["normal-flow", "--size", "2,3"], "1 <= r <= n"),
+    (["normal-flow", "--size", "2,3"], "needs r <= n"),
     (["normal-flow", "--size", "x"], "is not a size"),
     (["normal-flow", "euclidean-flow", "--mutant", "3"], "exactly one CLAIM"),
     (["--seed", "-1"], "--seed"),
