@@ -119,3 +119,17 @@ def test_a_residual_below_float64s_range_is_refuted_by_ball_and_printed_as_it_is
     assert by[("k-pow", "float")].verdict == "numeric" and "e-6" in by[("k-pow", "float")].certificate
     assert by[("k-pow", "ball")].verdict != "fails"
     assert "mpmath30: max |residual| 0.00e+00" not in by[("k-pow-false", "float")].message
+
+
+def test_a_tiny_or_cancelled_residual_fools_no_method():
+    """The review's own trick on the stop's change to ball (exclusion of 0 decided in arb): false statements whose
+    residual is 2⁻¹¹⁰⁰ (below float64's normal range) and a nonvanishing one that is 0 on T*V, beside true twins
+    (a 10³⁰⁰ cancellation, a nonvanishing 2⁻¹¹⁰⁰·XᵀX).  No method passes a false one; ball may stay inconclusive on
+    the cancellation, never refute it."""
+    res = stiefelsym.verify(None, files=[OWN / "tiny.py"], sizes=[(3, 2)], methods=FIXED + ["free"], jobs=1)
+    by = {(r.claim, r.method): r.verdict for r in res}
+    for m in FIXED + ["free"]:
+        for cid in ("fool-subnormal-false", "fool-nonzero-false"):
+            assert by[(cid, m)] not in ("proved", "checked", "numeric"), (cid, m, by[(cid, m)])
+        assert by[("fool-cancel-true", m)] != "fails" and by[("fool-nonzero-true", m)] != "fails", m
+    assert by[("fool-subnormal-false", "ball")] == by[("fool-nonzero-false", "ball")] == "fails"
