@@ -84,10 +84,7 @@ def _plain_size(s: Any) -> Size:
 def _check_arguments(methods: tuple, sizes: Any, seed: Any, timeout: Any, memory: Any, jobs: Any, budget: Any) -> None:
     """ValueError, naming the argument, for arguments of :func:`verify` the command line would refuse: a run of
     nothing (no method, an empty list of sizes) is not a green result."""
-    import math
-
-    def number(x: Any) -> bool:
-        return type(x) in (int, float) and math.isfinite(x)
+    from stiefelsym.run.pool import amount_problem
     if not methods:
         raise ValueError("methods names no method: give at least one of auto, exact, rational, modular, float, ball, "
                          "free")
@@ -98,9 +95,24 @@ def _check_arguments(methods: tuple, sizes: Any, seed: Any, timeout: Any, memory
     if type(jobs) is not int or jobs < 1:
         raise ValueError(f"jobs must be an int >= 1 (the worker processes), not {jobs!r}")
     for name, x, optional in (("timeout", timeout, False), ("memory", memory, True), ("budget", budget, True)):
-        if (x is None and not optional) or (x is not None and (not number(x) or x <= 0)):
-            raise ValueError(f"{name} must be a positive number{' or None' if optional else ''} (seconds"
-                             f"{'; GiB for memory' if name == 'memory' else ''}), not {x!r}")
+        if not (x is None and optional) and amount_problem(name, x):
+            raise ValueError(amount_problem(name, x) + (" (or None: no limit)" if optional else ""))
+
+
+def _check_traced_sizes(c: Claim, pairs: list[Size]) -> None:
+    """ValueError for a claim of a claims file (``load(files=F)``) asked at a size its file was not traced at:
+    no code of the file runs in this process, so each size of a run must be one its child traced."""
+    from stiefelsym.run.userfile import TracedFunction
+    for f in [c.func] + [k.func for k in c.corrections]:
+        if isinstance(f, TracedFunction) and not f.symbolic():
+            have = set(f.sizes())
+            missing = [s for s in pairs if 1 <= s.r <= s.n and c.sizes.admits(s.n, s.r) and (s.n, s.r) not in have]
+            if missing:
+                raise ValueError(
+                    f"claim {c.id!r} of {f.path} was traced at the sizes given to load() only "
+                    f"({', '.join(f'({a},{b})' for a, b in sorted(have)) or 'none'}), not at "
+                    f"{', '.join(f'({s.n},{s.r})' for s in missing)}: pass the sizes to load(files=..., sizes=[...]), "
+                    f"or verify({c.id!r}, files=..., sizes=...), which traces the file at the run's sizes")
 
 
 def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
@@ -139,6 +151,10 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
         _plain_size(_size_text(s) if isinstance(s, str) else s) for s in sizes]
     named = [claims] if isinstance(claims, (str, Claim)) else (None if claims is None else list(claims))
     ids = [c for c in named or () if isinstance(c, str)]
+    if named is not None and files and not ids:
+        raise ValueError("files= names the claims files whose claims are verified by id (or all of them when no "
+                         "claim is named); the claim objects given are verified as they are: name the file's claims "
+                         "by id, or drop files=")
     registry = Registry()
     if named is None or ids:
         wanted = list(pairs or ())
@@ -155,6 +171,9 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
             raise ValueError(f"two different claims with the id {c.id!r} (a run, its records and its rerun commands "
                              "name a claim by its id): give each claim an id of its own")
     size_list = pairs
+    for c in named or ():
+        if isinstance(c, Claim) and pairs is not None and set(methods) - {"free"}:
+            _check_traced_sizes(c, pairs)
     for c in selected:
         for m in methods:
             if m == "free":

@@ -697,10 +697,10 @@ def _all_entries(data: dict) -> list:
     return data.get("entries") or [e for c in data.get("cases", []) for e in c["certificate"]["entries"]]
 
 
-def bound(data: dict, record: dict) -> str:
+def bound(data: Any, record: dict) -> str:
     """Why a certificate is not the one of the record it sits in ("" when it is): its ``about`` (the claim id
     and the digest of the graph it was derived from, written by the free method) must name the record's."""
-    about = data.get("about")
+    about = data.get("about") if isinstance(data, dict) else None
     if not isinstance(about, dict) or not about.get("claim") or not about.get("digest"):
         return "the certificate does not say which claim and graph it is about"
     if (about["claim"], about["digest"]) != (record.get("claim"), record.get("digest")):
@@ -723,10 +723,18 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     bad = 0
     for path in paths:
-        with open(path, encoding="utf-8") as fh:
-            payload = json.load(fh)
-        shared = payload.get("certificates") or {}
-        for r in payload.get("results", [payload]):
+        try:
+            with open(path, encoding="utf-8") as fh:
+                payload = json.load(fh)
+        except (OSError, ValueError) as e:
+            payload = f"not a readable JSON file ({type(e).__name__}: {e})"
+        shared, records = (payload.get("certificates") or {}, payload.get("results", [payload])) \
+            if isinstance(payload, dict) else (None, None)
+        if not isinstance(shared, dict) or not isinstance(records, list) or not all(isinstance(r, dict) for r in records):
+            bad += 1
+            print(f"{path}: REJECTED: {payload if isinstance(payload, str) else 'not a results file (no list of records)'}")
+            continue
+        for r in records:
             data = r.get("certificate_data")
             if isinstance(data, dict) and list(data) == ["shared"]:
                 # a certificate several records carry is held once, in the file's table "certificates", under the
@@ -745,7 +753,7 @@ def main(argv: list[str] | None = None) -> int:
                 continue
             rep, why = check_certificate(data), bound(data, r)
             bad += not rep.accepted or bool(why)
-            verdict = f"REJECTED: {why or rep.message}" if why or not rep.accepted else "accepted"
+            verdict = f"REJECTED: {why if rep.accepted else rep.message}" if why or not rep.accepted else "accepted"
             print(f"{r.get('claim', path)}: {verdict} ({rep.entries} entries, {rep.terms} terms, {rep.seconds:.3f}s)")
             if rep.accepted and not why:
                 print(f"  proves, for the graph {r.get('digest')} of claim {r.get('claim')}"

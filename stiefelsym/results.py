@@ -230,11 +230,16 @@ def write_atomic(path: Path, text: str) -> None:
         raise
 
 
+def canonical_json(data: Any) -> str:
+    """The canonical JSON text of ``data``: keys sorted, no spaces, ASCII (what two records' fields are compared
+    by, and what a shared certificate's key digests)."""
+    return json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=True)
+
+
 def certificate_key(data: Any) -> str:
     """The key of a certificate in a results file's table of shared certificates: the SHA-256 of its
-    canonical JSON (keys sorted, no spaces)."""
-    text = json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=True)
-    return hashlib.sha256(text.encode("ascii")).hexdigest()
+    canonical JSON (:func:`canonical_json`)."""
+    return hashlib.sha256(canonical_json(data).encode("ascii")).hexdigest()
 
 
 def _share_certificates(records: list[dict[str, Any]]) -> dict[str, Any]:

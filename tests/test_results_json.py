@@ -126,3 +126,19 @@ def test_a_shared_certificate_that_is_not_the_one_its_key_names_is_refused(tmp_p
         if name != "unused":
             assert check_main([str(path)]) == 1
             assert "REJECTED: it refers to a shared certificate" in capsys.readouterr().out
+
+
+def test_the_checker_rejects_a_file_that_is_not_a_results_file(tmp_path, capsys):
+    # the standalone checker says REJECTED (exit 1) for any shape of file, never a traceback
+    from stiefelsym.certificate_check import main as check_main
+    shapes = ['[1]', '{"certificates": [1], "results": []}', '{"results": 5}', '{"results": [3]}', 'not json',
+              '{"results": [{"certificate_data": [1], "verdict": "proved"}]}',
+              '{"results": [{"certificate_data": "text", "verdict": "proved"}]}',
+              '{"results": [{"certificate_data": {"shared": 5}}]}']
+    for i, text in enumerate(shapes):
+        path = tmp_path / f"shape{i}.json"
+        path.write_text(text)
+        assert check_main([str(path)]) == 1, text
+        assert "REJECTED" in capsys.readouterr().out, text
+    assert check_main([str(tmp_path / "absent.json")]) == 1
+    assert "not a readable JSON file" in capsys.readouterr().out

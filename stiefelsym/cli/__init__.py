@@ -29,7 +29,7 @@ from stiefelsym._lazy import lazy
 from stiefelsym.claims import CATALOG, CatalogError, ClaimTimeout, Claim, Registry, Size, load_catalog
 from stiefelsym.methods.hard import HARD_CASES
 from stiefelsym.run import rerun
-from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, MOST_GIB, MOST_SECONDS, Terminated, raise_on_sigterm
+from stiefelsym.run.pool import AMOUNTS, DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, amount_problem, raise_on_sigterm
 from stiefelsym.results import Result, dump_results, load_results, parse_json, write_atomic
 from stiefelsym.scene import SizeError
 
@@ -75,12 +75,13 @@ class Amount(click.FloatRange):
 
     name = "amount"
 
-    def __init__(self, most: float) -> None:
-        super().__init__(min=0, max=most, min_open=True)
+    def __init__(self, amount: str) -> None:
+        self.amount = amount
+        super().__init__(min=0, max=AMOUNTS[amount][1], min_open=True)
 
     def convert(self, value, param, ctx):   # type: ignore[no-untyped-def]
         rv = super().convert(value, param, ctx)
-        if rv != rv:
+        if amount_problem(self.amount, rv):     # nan passes the range
             self.fail(f"{value!r} is not a number", param, ctx)
         return rv
 
@@ -744,14 +745,14 @@ class _Stdout:
 @click.option("--hard", type=click.Choice(sorted(HARD_CASES)), default=None,
               help="Evaluate at a hard numerical case (rational, modular, float and ball methods): "
                    + "; ".join(f"{k}: {v.description}" for k, v in sorted(HARD_CASES.items())) + ".")
-@click.option("--timeout", type=Amount(MOST_SECONDS), default=DEFAULT_TIMEOUT,
+@click.option("--timeout", type=Amount("timeout"), default=DEFAULT_TIMEOUT,
               show_default=True, metavar="SECONDS",
               help="Wall-time budget of each run (auto as a whole); past it the run's worker is "
                    "killed and the verdict is inconclusive.  The claims of a --claims file are traced before the "
                    "runs, each twice at each size it needs, in child processes under the engine's own budget "
                    "(300 s per function and size, never the run's, which the file would see): that time is not "
                    "part of any run's.")
-@click.option("--memory", type=Amount(MOST_GIB), default=DEFAULT_MEMORY_GIB,
+@click.option("--memory", type=Amount("memory"), default=DEFAULT_MEMORY_GIB,
               show_default=True, metavar="GIB",
               help="Memory budget (address space, GiB) of each run's worker: a run whose peak memory "
                    "predicted by the cost model exceeds it is refused before anything runs (exit 2, with the "
@@ -759,7 +760,7 @@ class _Stdout:
 @click.option("--jobs", type=click.IntRange(min=1), default=1, show_default=True, metavar="N",
               help="Runs computed in parallel (worker processes); the results come in the same "
                    "order with the same verdicts whatever N.")
-@click.option("--budget", type=Amount(MOST_SECONDS), default=DEFAULT_BUDGET,
+@click.option("--budget", type=Amount("budget"), default=DEFAULT_BUDGET,
               show_default=True, metavar="SECONDS",
               help="Refuse, before anything runs (exit 2), a run (claim, size, method) whose time "
                    "predicted by the cost model (`stiefelsym speed`) exceeds SECONDS; the refusal "

@@ -18,7 +18,7 @@ from typing import Any
 
 import click
 
-from stiefelsym.cli import MOST_SECONDS, Amount, InputError, SeedType, standalone_command
+from stiefelsym.cli import Amount, InputError, SeedType, standalone_command
 
 FLOAT_NS_FULL = [2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64, 100, 128, 200]
 #: r = 2: the sizes to n = 200 (float64 and, as far as the cost model allows, every precision)
@@ -49,7 +49,7 @@ DIM_NOTE = ("Dimensions are integers (exact ranks and counts): there is no round
               default=None, metavar="FILE",
               help="Fit the cost model's measurements stored in FILE (a costmodel.json) instead of measuring "
                    "again; with --cost-only the same file gives the same fit, plots and tables, byte for byte.")
-@click.option("--cap", type=Amount(MOST_SECONDS), default=None, metavar="SECONDS",
+@click.option("--cap", type=Amount("timeout"), default=None, metavar="SECONDS",
               help="Seconds one run of the cost model's series may take (default 20; the series stops before a "
                    "size predicted beyond it).")
 @click.option("--remeasure", "remeasure", multiple=True, metavar="METHOD",

@@ -10,12 +10,12 @@ notation that is not its graph's) is caught.
 """
 from __future__ import annotations
 
-import json
 from collections import Counter
 from typing import Any, Callable, Iterable
 
 from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import Claim, Registry, Size
+from stiefelsym.results import canonical_json as _canonical
 
 
 def proof_for_every_size(get: Callable[[str], Any]) -> bool:
@@ -58,10 +58,6 @@ def certificate_problems(records: Iterable[Any]) -> list[str]:
             if why:
                 out.append(f"{get('claim')} ({n},{r}): {why}")
     return out
-
-
-def _canonical(x: Any) -> str:
-    return json.dumps(x, sort_keys=True, separators=(",", ":"))
 
 
 def certificate_binding_problems(records: Iterable[Any], registry: Registry) -> list[str]:

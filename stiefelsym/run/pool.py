@@ -38,6 +38,18 @@ DEFAULT_TIMEOUT = 300.0
 DEFAULT_MEMORY_GIB = 4.0
 #: the largest time budget (seconds, about 31 years) and memory budget (GiB) a run takes
 MOST_SECONDS, MOST_GIB = 1e9, 1e6
+#: the amounts a run takes (the command line's options, :func:`stiefelsym.verify`'s arguments): unit, largest
+AMOUNTS = {"timeout": ("seconds", MOST_SECONDS), "memory": ("GiB", MOST_GIB), "budget": ("seconds", MOST_SECONDS)}
+
+
+def amount_problem(name: str, x: object) -> str:
+    """Why ``x`` is not an amount ``name`` of :data:`AMOUNTS` ("" when it is one): a positive int or float up to
+    its largest.  nan fails every comparison and inf exceeds the largest, so both are refused (nan would switch
+    a time limit off; inf reached select() and int())."""
+    unit, most = AMOUNTS[name]
+    if type(x) not in (int, float) or not (0 < x <= most):   # type: ignore[operator]
+        return f"the {name} must be a positive number of {unit}, at most {most:g}, not {x!r}"
+    return ""
 #: a worker retires after a job once its resident memory has grown by more than this (bytes) since it
 #: started, and a fresh one, forked from the parent, takes the next job: every symbolic attempt at
 #: n >= 6 runs in a child forked from the worker, and a fork (with the child's exit) costs system time

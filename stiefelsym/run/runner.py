@@ -20,7 +20,7 @@ from typing import Any, Callable, Iterable, Iterator, Sequence
 from stiefelsym.claims import Claim, Registry, Size, statement_state
 from stiefelsym.methods.hard import hard_case
 from stiefelsym.methods.fixed_size import METHOD_RUNNERS, BudgetError, check_budget, expected_verdict, spaced_collections  # noqa: F401 (BudgetError is part of the runner API)
-from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, MOST_GIB, MOST_SECONDS, Outcome, Terminated, WorkerPool  # noqa: F401
+from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, MOST_GIB, MOST_SECONDS, Outcome, Terminated, WorkerPool, amount_problem  # noqa: F401
 from stiefelsym.results import PASSING, VERDICTS, Result
 from stiefelsym.scene import SizeError
 from stiefelsym.ir import numbers_only
@@ -766,10 +766,9 @@ def checked_options(seed: int, timeout: float, memory: float | None, hard: str |
     case has nothing to say to the dimension-free method and refuses the symbolic one)."""
     if seed < 0:
         raise ValueError("the seed must be a non-negative integer")
-    if not (0 < timeout <= MOST_SECONDS):        # (nan fails every comparison)
-        raise ValueError(f"the time budget must be a positive number of seconds, at most {MOST_SECONDS:g}")
-    if memory is not None and not (0 < memory <= MOST_GIB):
-        raise ValueError(f"the memory budget must be a positive number of GiB, at most {MOST_GIB:g}")
+    for name, x in (("timeout", timeout), ("memory", memory)):
+        if x is not None and amount_problem(name, x):
+            raise ValueError(amount_problem(name, x))
     methods = list(methods)
     if hard is not None:
         hard_case(hard)

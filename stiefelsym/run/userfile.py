@@ -1249,6 +1249,11 @@ class TracedFunction:
     def sizes(self) -> list:
         return sorted(k for k in self._table if k is not None and k[0] != "r")
 
+    def symbolic(self) -> bool:
+        """Whether the file's child traced a graph with symbolic sizes (which serves every size) rather than a
+        refusal there: then no size of a run needs a graph of its own."""
+        return None in self._table and type(self._table[None]) not in (_Budget, _Recorded)
+
     def __call__(self, s: Any) -> Any:
         from stiefelsym.ir.graph import Size as GSize
         from stiefelsym.ir.trace import _ACTIVE
@@ -1272,7 +1277,7 @@ class TracedFunction:
             where = "with symbolic sizes" if key is None else f"at ({n},{r})"
             have = ", ".join(f"({a},{b})" for a, b in self.sizes()) or "none"
             raise NoGraph(f"{self.__name__} has no graph {where}: its claims file was traced in a child process "
-                          f"at the sizes the command needed only ({have})")
+                          f"at the sizes the run needed only ({have})")
         if type(entry) is _Budget:
             entry.throw(_where(key))
         if type(entry) is _Recorded:
