@@ -40,7 +40,8 @@ def load(files: PathLike | Iterable[PathLike] = (), catalog: bool | None = None,
     A file is imported and its claims traced in child processes, as ``stiefelsym verify --claims``
     does (:func:`stiefelsym.run.userfile.load_claims_isolated`): at the sizes each claim lists and at
     ``sizes`` (only the claims ``only`` names, when given); nothing of the file runs in the calling process.
-    To import a file in this process (its claims as written, e.g. to call their functions), use
+    So a claim traced at fixed sizes (one that reads entries) is verified by :func:`verify` at those sizes only
+    (ValueError at others, naming them); a claim traced with symbolic sizes serves every size.  To import a file in this process (its claims as written, e.g. to call their functions), use
     :func:`stiefelsym.load_claims_file`."""
     from stiefelsym.run.userfile import load_claims_isolated
     merged = Registry()
