@@ -59,3 +59,27 @@ def test_a_value_computed_in_the_background_is_the_value_computed_here():
             raise RuntimeError("only in the child")
         return "here"
     assert in_background(raising_in_the_child)() == "here" and calls == [parent]
+
+
+def _echo(job):
+    return job
+
+
+@needs_fork
+def test_prepare_sees_each_task_when_it_is_sent_and_on_outcome_when_it_has_ended():
+    """``prepare(task, worker)`` makes what the worker is given when the task is sent to it, ``on_outcome(task,
+    outcome, worker)`` sees each task as soon as it ended, with the number of its worker (1, 2, ...)."""
+    sent: list = []
+    ended: list = []
+
+    def prepare(task, worker):
+        sent.append((task, worker))
+        return (task, worker)
+
+    with WorkerPool(_echo, workers=2, timeout=30) as pool:
+        got = list(pool.run([("a", 0), ("b", 0), ("a", 1)], affinity=lambda t: t[0], prepare=prepare,
+                            on_outcome=lambda t, o, w: ended.append((t, o.value, w))))
+    assert sorted(t for t, _ in sent) == sorted([("a", 0), ("b", 0), ("a", 1)])
+    assert {w for _, w in sent} <= {1, 2}
+    assert sorted((t, v, w) for t, v, w in ended) == sorted((t, (t, w), w) for t, w in sent)
+    assert [o.value[0] for _, o in got] == [("a", 0), ("b", 0), ("a", 1)]

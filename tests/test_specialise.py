@@ -189,3 +189,44 @@ def test_auto_from_n_5_takes_no_dimension_free_proof_of_another_graph():
               sizes=admissible(n_max=6))
     assert run_one(c, Size(5, 2), "auto", 0).verdict == "fails"
     assert run_one(c, Size(6, 2), "auto", 0).verdict == "proved"
+
+
+def test_a_dimension_free_result_kept_in_one_process_is_taken_in_another_without_a_new_attempt(monkeypatch):
+    """What one worker kept of a claim's dimension-free run (its record with no size, the proofs of its attempts)
+    is handed over once (take_kept) and adopted by another worker, whose run at a size then makes no attempt of
+    its own and gives the record it would have given; a claim that reads differently adopts nothing."""
+    from unittest import mock
+    from stiefelsym.methods.dimension_free import run_free
+    import stiefelsym.run.isolate as isolate
+    c = _claim(dual_gram)
+    expected = run_one(c, Size(5, 2), "auto", 0)
+    assert SPECIALISED in expected.reductions[0]
+    specialise._FREE.clear()
+    specialise.remember(c, None, run_free(c))
+    entries = specialise.take_kept(c, None)
+    assert len(entries) == 1 and entries[0][0] is None and entries[0][3].verdict == "proved"
+    assert specialise.take_kept(c, None) == []          # handed over once
+    specialise._FREE.clear()
+    other = dataclasses.replace(c, realization="metric")
+    specialise.adopt(other, None, entries)
+    assert not specialise._FREE
+    specialise.adopt(c, None, entries)
+    assert specialise.take_kept(c, None) == []          # an adopted result is not handed over again
+    spy = mock.Mock(wraps=isolate.run_isolated)
+    monkeypatch.setattr(isolate, "run_isolated", spy)
+    got = run_one(c, Size(5, 2), "auto", 0)
+    assert spy.call_count == 0
+    assert dataclasses.replace(got, seconds=0.0) == dataclasses.replace(expected, seconds=0.0)
+
+
+def test_two_workers_give_the_records_one_worker_gives():
+    """With two workers the claim's dimension-free results are handed from the worker that kept them to the other
+    (runner.FREE_KEPT): the records are those of one worker (timings aside), and none carries what was handed."""
+    from stiefelsym.run import runner
+    c = _claim(dual_gram)
+    sizes = [Size(5, 2), Size(6, 2), Size(6, 3), Size(7, 2), Size(7, 3)]
+    one = runner.verify([c], sizes=sizes, methods=("free", "auto"), jobs=1)
+    two = runner.verify([c], sizes=sizes, methods=("free", "auto"), jobs=2)
+    assert [dataclasses.replace(x, seconds=0.0) for x in one] == [dataclasses.replace(x, seconds=0.0) for x in two]
+    assert all(SPECIALISED in x.reductions[0] for x in two if x.n is not None)
+    assert not any(hasattr(x, runner.FREE_KEPT) for x in one + two)

@@ -40,8 +40,9 @@ from stiefelsym.scene import REALIZATIONS
 
 #: the dimension-free results in this process: (claim id, id of function, family r = k or None) -> (claim,
 #: function, what the run reads of the claim, the digests of the graphs proved, result, the claim's sizes, the time
-#: limit that stopped the attempt or None, the seconds the attempt took); a result is used only while the claim and
-#: its graph are unchanged, and only by a request whose time limit the attempt kept
+#: limit that stopped the attempt or None, the seconds the attempt took, whether another process of the run is yet
+#: to be given it: :func:`take_kept`); a result is used only while the claim and its graph are unchanged, and only
+#: by a request whose time limit the attempt kept
 _FREE: "OrderedDict[tuple, tuple]" = OrderedDict()
 FREE_CACHE_SIZE = 64
 #: the longest the dimension-free attempt of a run at a size may take (a quarter of the run's budget if less): a
@@ -104,7 +105,10 @@ def _free_result(claim: Claim, func: Callable, digest: str, families: tuple, sec
         stopped = seconds if isinstance(exc, HardTimeout) else None
     took = 0.0 if stopped is not None else min(time.perf_counter() - t0, seconds)
     digests = (digest,) if family is not None else _proved_digests(claim, func, digest)
-    _keep(key, (claim, func, state, digests, res, claim.sizes, stopped, took))
+    # a proof is handed to the run's other processes (an attempt that ended otherwise is made again there: it may
+    # have ended by what happened to its child, not by what it computed)
+    _keep(key, (claim, func, state, digests, res, claim.sizes, stopped, took,
+                stopped is None and res.verdict == "proved"))
     return res
 
 
@@ -154,7 +158,43 @@ def remember(claim: Claim, func: Callable | None, res: Result) -> None:
         return
     state = _claim_state(claim, (tuple(stated[0]), stated[1]))
     copy = pickle.loads(pickle.dumps(res, protocol=pickle.HIGHEST_PROTOCOL))
-    _keep((claim.id, id(func), None), (claim, func, state, digests, copy, claim.sizes, None, res.seconds))
+    _keep((claim.id, id(func), None), (claim, func, state, digests, copy, claim.sizes, None, res.seconds, True))
+
+
+def take_kept(claim: Claim, func: Callable | None) -> list[tuple]:
+    """The dimension-free results of a claim's function that this process keeps and has not handed over yet,
+    for the run's other processes to :func:`adopt`: each as (family r = k or None, what the run read of the
+    claim, the digests of the graphs proved, the result, the seconds it took).  Those are the claim's record
+    (:func:`remember`) and the proofs of attempts made here; each is taken once."""
+    func = func or claim.func
+    out = []
+    for key, hit in list(_FREE.items()):
+        if key[0] == claim.id and hit[1] is func and hit[8]:
+            _FREE[key] = hit[:8] + (False,)
+            out.append((key[2],) + hit[2:5] + (hit[7],))
+    return out
+
+
+def adopt(claim: Claim, func: Callable | None, entries: list[tuple]) -> None:
+    """Keep the dimension-free results another process of the same run kept (:func:`take_kept`), as this process
+    would have kept them: the same computations, so a run at a size of the claim here takes them instead of
+    forking the attempts again.  A result is not adopted where this process keeps its own, or where the claim
+    here is not the one it was computed for (what the run reads of it differs)."""
+    if fixed_size._MUTATION_ANALYSIS or fixed_size._LOAN is not None or claim.expect != "holds" \
+            or claim.realization not in REALIZATIONS:
+        return
+    func = func or claim.func
+    try:
+        stated = size_families(claim)
+    except Exception:   # noqa: BLE001 - a statement of sizes that cannot be read: nothing to keep
+        return
+    here = _claim_state(claim, (tuple(stated[0]), stated[1]))
+    for family, state, digests, res, took in entries:
+        key = (claim.id, id(func), family)
+        hit = _FREE.get(key)
+        if (hit is not None and hit[1] is func) or state != here:
+            continue
+        _keep(key, (claim, func, state, digests, res, claim.sizes, None, took, False))
 
 
 def per_r_family(claim: Claim, n: int, r: int) -> SizeFamily | None:

@@ -329,6 +329,8 @@ class _Worker:
         self.job: int | None = None
         #: the affinity key of the last task it was given (see :meth:`WorkerPool.run`)
         self.key: Any = None
+        #: which process of the pool it is (1 for the first forked, and so on)
+        self.number = 0
         self.started = 0.0
         self.deadline = 0.0
         self.buffer = bytearray()
@@ -379,6 +381,7 @@ class WorkerPool:
         self.describe = describe or (lambda exc: f"{type(exc).__name__}: {exc}")
         self.forking = fork_available() if fork is None else fork and fork_available()
         self.workers: list[_Worker] = []
+        self.spawned = 0        # the worker processes forked so far
         if self.forking:
             _death_signal_setup()
 
@@ -418,6 +421,8 @@ class WorkerPool:
             except OSError:
                 pass
             w = _Worker(pid, task_w, result_r)
+            self.spawned += 1
+            w.number = self.spawned
             self.workers.append(w)
         finally:
             if mask is not None:
@@ -461,7 +466,8 @@ class WorkerPool:
     # -- jobs
 
     def run(self, tasks: Sequence[Any] | Iterator[Any],
-            affinity: Callable[[Any], Any] | None = None) -> Iterator[tuple[int, Outcome]]:
+            affinity: Callable[[Any], Any] | None = None, prepare: Callable[[Any, int], Any] | None = None,
+            on_outcome: Callable[[Any, Outcome, int], None] | None = None) -> Iterator[tuple[int, Outcome]]:
         """Outcomes of the tasks, in the order of ``tasks`` (computed up to ``workers`` at once).  An
         iterator of tasks is drawn from only when a worker is free for its next task (what makes a task,
         such as the plan's look at which runs are one computation, is done while the workers compute).
@@ -471,21 +477,30 @@ class WorkerPool:
         passed over wait for their worker); only when there is none does it take another worker's next task.
         So the tasks of one key run in one worker, in order, while there is other work, and what a worker
         computed for one task serves the next of its key.  The outcomes come in the order of ``tasks``
-        whatever the workers did."""
+        whatever the workers did.
+
+        ``prepare(task, worker)`` (in this process): what ``execute`` is given for a task, made when the task is
+        handed to its worker (not when it is drawn), so that it can carry what the jobs ended by then computed;
+        ``worker`` numbers the worker process (each process forked for the pool has its own number; 0 where the
+        jobs run in this process);
+        ``on_outcome(task, outcome, worker)`` (in this process) sees each task with its outcome and the number of
+        its worker as soon as its job has ended, whatever the order of ``tasks``."""
         if not self.forking:
             for i, task in enumerate(tasks):
                 t0 = time.perf_counter()
                 try:
-                    value = self.execute(task)
+                    value = self.execute(task if prepare is None else prepare(task, 0))
                 except (KeyboardInterrupt, Terminated):
                     raise
                 except MemoryError as exc:
-                    yield i, Outcome("memory", message=self.describe(exc), seconds=time.perf_counter() - t0)
-                    continue
+                    outcome = Outcome("memory", message=self.describe(exc), seconds=time.perf_counter() - t0)
                 except BaseException as exc:  # noqa: BLE001
-                    yield i, Outcome("error", message=self.describe(exc), seconds=time.perf_counter() - t0)
-                    continue
-                yield i, Outcome("ok", value, seconds=time.perf_counter() - t0)
+                    outcome = Outcome("error", message=self.describe(exc), seconds=time.perf_counter() - t0)
+                else:
+                    outcome = Outcome("ok", value, seconds=time.perf_counter() - t0)
+                if on_outcome is not None:
+                    on_outcome(task, outcome, 0)
+                yield i, outcome
             return
         source = iter(tasks)
         drawn: list[Any] = []            # the tasks drawn so far, by index
@@ -520,7 +535,7 @@ class WorkerPool:
                     idle.started = time.monotonic()
                     idle.deadline = idle.started + self.timeout
                     try:
-                        _send(idle.task_fd, (i, drawn[i]))
+                        _send(idle.task_fd, (i, drawn[i] if prepare is None else prepare(drawn[i], idle.number)))
                     except OSError:          # the worker is gone: a fresh one takes the job
                         pending.appendleft(i)
                         self._reap(idle, kill=True)
@@ -531,6 +546,7 @@ class WorkerPool:
                         ready, _, _ = select.select([w.result_fd for w in busy], [], [], wait)
                     except InterruptedError:
                         ready = []
+                    jobs = {w: w.job for w in busy}
                     for w in busy:
                         if w.result_fd in ready:
                             self._collect(w, done)
@@ -540,6 +556,10 @@ class WorkerPool:
                             done[w.job] = Outcome("timeout", message=f"exceeded its time budget of "
                                                   f"{format_seconds(self.timeout)} s", seconds=now - w.started)
                             self._reap(w, kill=True)
+                    if on_outcome is not None:
+                        for w, j in jobs.items():
+                            if j in done:       # its job ended here (a busy worker's job is never done before)
+                                on_outcome(drawn[j], done[j], w.number)
                 while following in done:
                     yield following, done.pop(following)
                     following += 1

@@ -653,21 +653,38 @@ def _finish(res: Result, claim: Claim, variant: str | None, hard: str | None = N
 # --------------------------------------------------------------------------- the plan, in workers
 
 def _execute(claims: list[Claim], seed: int, hard: str | None, timeout: float, in_worker: bool,
-             task: Task) -> Result:
-    """Run one task (in a worker, unless fork is not available): the raw result."""
+             task: Task, free: list | None = None, share: bool = False) -> Result:
+    """Run one task (in a worker, unless fork is not available): the raw result.  ``free``: the dimension-free
+    results of the task's claim and function that other workers kept (:func:`stiefelsym.methods.specialise.adopt`),
+    taken as this worker's own; ``share``: the result says which this worker kept and has not handed over
+    (:data:`FREE_KEPT`), for the other workers."""
     ci, n, r, method, k = task
     c = claims[ci]
     func = c.corrections[k].func if k >= 0 else None
     if k >= 0:
         c = c.corrected(k)
     size = None if n is None else Size(n, r)
+    if free is not None:
+        from stiefelsym.methods.specialise import adopt
+        adopt(c, func, free)
     res = _guarded(c, size, method, seed, func, hard, in_worker=in_worker, timeout=timeout)
+    if share:
+        from stiefelsym.methods.specialise import take_kept
+        setattr(res, FREE_KEPT, take_kept(c, func))
     if func is not None:
         # what a correction changes, read here, where its graph was traced for the run (and in parallel):
         # the parent reads it itself for a record computed at another size or not computed at all
         res.change = graph_change(claims[ci], func, size)
         res._change_at = (n, r)     # type: ignore[attr-defined]  (not a field: never in a record)
     return res
+
+
+#: the attribute (not a field: never in a record) by which a worker's result carries the dimension-free results of
+#: its claim the worker kept (its record with no size, the proofs of the attempts of its runs at a size) to the
+#: parent, which hands them to the other workers with the claim's runs at a size: each dimension-free attempt of
+#: auto and exact is then made once per run, not once per worker (the records are the same: the attempt is the
+#: same computation)
+FREE_KEPT = "_free_kept"
 
 
 def _settle(outcome: Outcome, task: Task, claims: list[Claim], seed: int, hard: str | None) -> Result:
@@ -734,8 +751,31 @@ def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Ite
     memory_bytes = None if memory is None else int(memory * GIB)
     results: list[Result] = []
 
-    def execute(task: Task) -> Result:
-        return _execute(claims, seed, hard, timeout, pool.forking, task)
+    # the dimension-free results the workers kept, by (claim, correction), each as its worker handed it over
+    # (:data:`FREE_KEPT`): handed to every other worker with its next run at a size of the claim that may make the
+    # attempt (auto, exact), so that no worker makes it again
+    free_kept: dict[tuple[int, int], list[tuple]] = {}
+    given: set[tuple[int, int, int, int]] = set()   # (worker, claim, correction, entry): that worker has it
+
+    def execute(job: tuple[Task, list | None]) -> Result:
+        return _execute(claims, seed, hard, timeout, pool.forking, job[0], job[1], share=True)
+
+    def prepare(task: Task, worker: int) -> tuple[Task, list | None]:
+        ci, n, _, method, k = task
+        if n is None or method not in ("auto", "exact"):
+            return task, None
+        entries = free_kept.get((ci, k), [])
+        new = [j for j in range(len(entries)) if (worker, ci, k, j) not in given]
+        given.update((worker, ci, k, j) for j in new)
+        return task, [entries[j] for j in new] or None
+
+    def ended(task: Task, outcome: Outcome, worker: int) -> None:
+        if outcome.kind == "ok" and isinstance(outcome.value, Result):
+            ci, k = task[0], task[4]
+            entries = free_kept.setdefault((ci, k), [])
+            for entry in outcome.value.__dict__.pop(FREE_KEPT, None) or ():
+                given.add((worker, ci, k, len(entries)))    # its worker keeps it
+                entries.append(entry)
 
     def deliver(res: Result) -> None:
         results.append(res)
@@ -750,7 +790,8 @@ def verify(claims: list[Claim], *, sizes: list[Size] | None = None, methods: Ite
                     describe=_describe, fork=fork) as pool:
         # a worker keeps to one claim's runs while there are others for the other workers: what it computed of the
         # claim (its graphs, its dimension-free proof) serves the claim's other runs (the records are the same)
-        run_with_corrections(lambda tasks: pool.run(tasks, affinity=_claim_of), tasks, claims, seed, hard, deliver,
+        run_with_corrections(lambda tasks: pool.run(tasks, affinity=_claim_of, prepare=prepare, on_outcome=ended),
+                             tasks, claims, seed, hard, deliver,
                              streams=True)
     return results
 
