@@ -124,3 +124,26 @@ def test_the_words_of_a_derivative_of_a_cube_are_one_word_three_times():
     assert len(found) == 1
     (_s, words, atoms, _tree), = found.values()
     assert [(c, len(w)) for c, w in words] == [(3, 3)]          # 3 tr(D M M)
+
+
+def test_the_structure_of_a_graph_is_read_in_one_pass_as_each_of_its_readers_reads_it():
+    """The program is built from one pass over the nodes (_structure): for every node the nodes it reads (as
+    Graph.refs), the functions whose parameters it reads (as _deps computes them alone) and the nodes that read
+    it (each as many times as it reads it); a graph that has grown since is read again."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.ir.evaluate import _structure
+    from stiefelsym.scene import REALIZATIONS
+    cons = REALIZATIONS["standard"]
+    g = compile_claim(derivative_of_a_cube, 4, 2, (cons.name, cons.build)).sealed()
+    refs, deps, readers = _structure(g)
+    assert refs == [g.refs(i) for i in range(len(g.ops))]
+    alone = g.sealed()
+    assert deps == _deps(alone) and _deps(g) is deps
+    expected: dict[int, list[int]] = {}
+    for k in range(len(g.ops)):
+        for j in g.refs(k):
+            expected.setdefault(j, []).append(k)
+    assert readers == expected
+    assert _structure(g) is _structure(g)
+    g.add("neg", (g.output,))
+    assert len(_structure(g)[0]) == len(g.ops)

@@ -70,18 +70,62 @@ def _deps(g: Graph) -> list[frozenset]:
         if op != "scene" and op != "param" and op != "fn" and len(below) <= 1:
             deps.append(below[0] if below else empty)      # the common case: no set to build
             continue
-        d: set = set()
-        if op == "scene" and args[0] != 0:
-            d.add(args[0])
-        elif op == "param":
-            d.add(args[0])
-        for x in below:
-            d |= x
-        if op == "fn":
-            d.discard(args[0])
-        deps.append(frozenset(d))
+        deps.append(_deps_of(op, args, below))
     g.cache["deps"] = deps
     return deps
+
+
+def _deps_of(op: str, args: tuple, below: list[frozenset]) -> frozenset:
+    """The entry of :func:`_deps` of a scene, param or fn node, or of a node that reads nodes of several
+    functions (``below``: the nonempty entries of the nodes it reads)."""
+    d: set = set()
+    if op == "scene" and args[0] != 0:
+        d.add(args[0])
+    elif op == "param":
+        d.add(args[0])
+    for x in below:
+        d |= x
+    if op == "fn":
+        d.discard(args[0])
+    return frozenset(d)
+
+
+def _structure(g: Graph) -> tuple[list[list[int]], list[frozenset], dict[int, list[int]]]:
+    """For every node the nodes it reads (:meth:`Graph.refs`) and the functions whose parameters it reads
+    (:func:`_deps`), and for every node read the nodes that read it, in order (a node that reads it twice is
+    there twice): one pass over the nodes, once per graph (again where the graph has grown since; the lists are
+    read only).  What the program of a graph is built from (:func:`_program` and its fusions,
+    :func:`release_plan`)."""
+    size = len(g.ops)
+    hit = g.cache.get("structure")
+    if hit is not None and len(hit[0]) == size:
+        return hit
+    known = g.cache.get("deps")
+    fresh = known is None or len(known) != size
+    deps: list[frozenset] = [] if fresh else known
+    refs: list[list[int]] = []
+    readers: dict[int, list[int]] = {}
+    nested = g._nested
+    empty: frozenset = frozenset()
+    for i, (op, args) in enumerate(zip(g.ops, g.args)):
+        rs = nested(args)
+        refs.append(rs)
+        for j in rs:
+            got = readers.get(j)
+            if got is None:
+                readers[j] = [i]
+            else:
+                got.append(i)
+        if fresh:       # as _deps computes it
+            below = [deps[j] for j in rs if deps[j]]
+            if op != "scene" and op != "param" and op != "fn" and len(below) <= 1:
+                deps.append(below[0] if below else empty)
+            else:
+                deps.append(_deps_of(op, args, below))
+    if fresh:
+        g.cache["deps"] = deps
+    out = g.cache["structure"] = (refs, deps, readers)
+    return out
 
 
 #: values that are the same in every number system (never lifted)
@@ -118,7 +162,7 @@ class Evaluator:
             if bad:
                 raise GraphError(f"ops outside the IR: {', '.join(sorted(bad))}")
             g.cache["valid"] = True
-        self.deps = _deps(g)
+        self.refs, self.deps, _ = _structure(g)
         self.root = _Frame(0, {0: scene}, None)
 
     def run(self) -> Any:
@@ -232,7 +276,7 @@ class Evaluator:
                 stack.pop()
                 continue
             if ops[j] != "fn":
-                pending = [k for k in g.refs(j) if k not in self._memo(k, frame)]
+                pending = [k for k in self.refs[j] if k not in self._memo(k, frame)]
                 if pending:
                     stack.extend(pending)
                     continue
@@ -559,6 +603,7 @@ def _program(g: Graph, deps: list, fused: bool = False) -> list:
             kernels[i] = _paired_product_kernel(s, x, terms, kind, tree)
         for i, (s, words, atoms, tree) in _trace_words(g, deps, skip).items():
             skip[i], kernels[i] = (s,) + atoms, _trace_word_kernel(s, words, tree)
+    refs = _structure(g)[0]
     need = set()
     stack = [g.output.i]
     while stack:
@@ -569,23 +614,15 @@ def _program(g: Graph, deps: list, fused: bool = False) -> list:
         if i in skip:
             stack.extend(skip[i])
         elif g.ops[i] != "fn":
-            stack.extend(g.refs(i))
+            stack.extend(refs[i])
     prog = g.cache[name] = [(i, kernels[i] if i in skip else _kernel(g.ops[i], g.args[i])) for i in sorted(need)]
     return prog
 
 
-def _readers(g: Graph) -> dict[int, int]:
-    """How many times each node is read by the graph's nodes (computed once per graph: the fusions of one
-    program each ask; read only)."""
-    cached = g.cache.get("readers")
-    if cached is not None:
-        return cached
-    readers: dict[int, int] = {}
-    for k in range(len(g.ops)):
-        for j in g.refs(k):
-            readers[j] = readers.get(j, 0) + 1
-    g.cache["readers"] = readers
-    return readers
+def _readers(g: Graph) -> dict[int, list[int]]:
+    """For every node read by the graph's nodes, the nodes that read it (each as many times as it reads it; read
+    only: :func:`_structure`)."""
+    return _structure(g)[2]
 
 
 def _trace_products(g: Graph, deps: list) -> dict[int, tuple[int, int, int]]:
@@ -603,7 +640,7 @@ def _trace_products(g: Graph, deps: list) -> dict[int, tuple[int, int, int]]:
         if a[1] != "tr" or a[3] or len(a[2]) != 1 or type(a[0]) is not Ref or type(a[2][0]) is not Ref:
             continue
         j = a[2][0].i
-        if ops[j] != "matmul" or deps[j] or j == top or readers.get(j) != 1:
+        if ops[j] != "matmul" or deps[j] or j == top or len(readers.get(j, ())) != 1:
             continue
         x, y = args[j]
         if type(x) is Ref and type(y) is Ref:
@@ -631,7 +668,7 @@ def _trace_words(g: Graph, deps: list, taken: dict) -> dict[int, tuple[int, tupl
     top = g.output.i if g.output is not None else -1
 
     def inner(j: int) -> bool:
-        return ops[j] in ("add", "sub", "neg", "matmul") and not deps[j] and j != top and readers.get(j) == 1 \
+        return ops[j] in ("add", "sub", "neg", "matmul") and not deps[j] and j != top and len(readers.get(j, ())) == 1 \
             and all(type(v) is Ref for v in args[j])
 
     def words(j: int, nodes: list) -> list | None:
@@ -737,10 +774,7 @@ def _paired_products(g: Graph, deps: list) -> dict[int, tuple[int, int, tuple, s
     spaces (``tree``), so that an ill-typed y is refused as the unfused evaluation refuses it."""
     ops, args = g.ops, g.args
     top = g.output.i if g.output is not None else -1
-    readers: dict[int, list] = {}
-    for k in range(len(ops)):
-        for j in g.refs(k):
-            readers.setdefault(j, []).append(k)
+    readers = _readers(g)
 
     def flat(j: int, sign: int, out: list, inner: list) -> bool:
         """The signed products of the sum j, added to out (its nodes to inner)."""
@@ -975,12 +1009,13 @@ def release_plan(g: Graph, prog: list) -> list | None:
     ops = g.ops
     plan: list | None = None
     if not any(ops[i] == "fn" for i, _k in prog):
+        refs = _structure(g)[0]
         last: dict[int, int] = {}
         for step, (i, _k) in enumerate(prog):
-            for j in g.refs(i):
+            for j in refs[i]:
                 last[j] = step
                 if ops[j] == "kw":
-                    for k in g.refs(j):
+                    for k in refs[j]:
                         last[k] = step
         _transposes_live(g, prog, last)
         plan = [[] for _ in prog]
@@ -999,6 +1034,7 @@ def _transposes_live(g: Graph, prog: list, last: dict) -> None:
     earlier node and its operands (the float backend does, see
     :meth:`.native.Float64Backend.forget`), which must not be forgotten before then."""
     ops, args = g.ops, g.args
+    refs = _structure(g)[0]
     tr: dict[int, int] = {}
     seen: dict[tuple, int] = {}
     for step, (i, _k) in enumerate(prog):
@@ -1018,7 +1054,7 @@ def _transposes_live(g: Graph, prog: list, last: dict) -> None:
                 if j is not None:
                     tr.setdefault(i, j)
                     tr.setdefault(j, i)
-                    for k in (j, *g.refs(j)):
+                    for k in (j, *refs[j]):
                         if last.get(k, -1) < step:
                             last[k] = step
                     break
