@@ -135,6 +135,30 @@ def _encode_args(a: tuple) -> str:
     return "(" + ",".join(parts) + ")"
 
 
+#: the arguments whose text is their value's, by type: equal values of one of these types have the same text
+_PLAIN_TEXT = frozenset({str, int, bool, type(None)})
+#: the arguments of which one object has one text
+_SAME_OBJECT_TEXT = frozenset({Ref, str, int, bool, type(None)})
+
+
+def _same_argument(a: Any, b: Any) -> bool:
+    """Whether :func:`_encode` gives two arguments the same text (True only then; False also where it cannot tell
+    without the text)."""
+    t = type(a)
+    if t is not type(b):
+        return False
+    if t is Ref:
+        return type(a[0]) is int and type(b[0]) is int and a[0] == b[0]
+    if t is tuple:
+        return len(a) == len(b) and all(_same_argument(x, y) for x, y in zip(a, b))
+    if t in _PLAIN_TEXT:
+        return a == b
+    if t is Fraction:
+        return type(a.numerator) is int and type(a.denominator) is int and type(b.numerator) is int \
+            and type(b.denominator) is int and a.numerator == b.numerator and a.denominator == b.denominator
+    return _encode(a) == _encode(b)
+
+
 class Graph:
     """The nodes of one trace, with the claim's output (a ``Ref`` to a ``dict`` node)."""
 
@@ -194,6 +218,35 @@ class Graph:
         g.cache = {}
         g.sites = None if self.sites is None else list(self.sites)
         return g
+
+    def same_lines(self, other: "Graph") -> bool:
+        """Whether the two graphs have the same :meth:`lines` (so the same digest), read from their nodes without
+        writing the text: True only then (every op a str, every argument of the same type in both, with the
+        same value; a size or an engine name with the same text); False also where it cannot tell so
+        cheaply (the text then decides).  1, True and Fraction(1) differ, as in the text."""
+        ops, args = self.ops, self.args
+        if len(ops) != len(other.ops) or len(args) != len(ops) or len(other.args) != len(ops):
+            return False
+        plain = _SAME_OBJECT_TEXT
+        try:
+            if ops != other.ops or args != other.args:   # (equal values, in C: 1 == True == Fraction(1) still)
+                return False
+            if not all(type(o) is str for o in ops) or not all(type(o) is str for o in other.ops):
+                return False
+            # the types, argument by argument (a Ref is one shared object per number: the same object, the same text)
+            for a, b in zip(args, other.args):
+                if type(a) is not tuple or type(b) is not tuple or len(a) != len(b):
+                    if not _same_argument(a, b):
+                        return False
+                    continue
+                for x, y in zip(a, b):
+                    if x is y and type(x) in plain:
+                        continue
+                    if not _same_argument(x, y):
+                        return False
+            return _same_argument(self.output, other.output)
+        except Exception:   # noqa: BLE001 - an argument that cannot be compared so: the text decides
+            return False
 
     def refs(self, i: int) -> list[int]:
         """The nodes node ``i`` reads (last argument first, nested tuples likewise), from its arguments
