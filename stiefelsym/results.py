@@ -184,6 +184,13 @@ class Result:
         return cls(**d)
 
 
+#: the attribute (not a field: never in a record, results.json or a report) by which a record copied from another
+#: run of the same graph (a graph without r, run once per n: :func:`stiefelsym.run.runner._run_shared`) says which,
+#: as (n, r) of that record: the run log lists the seconds of the run once, at the record it was made for, and at
+#: each copy the record it was copied from
+COPY_OF = "_copy_of"
+
+
 class ResultList(list[Result]):
     """The results of :func:`stiefelsym.verify`, in the order of the plan: a list, with a summary,
     and displays for Jupyter (a summary table and one table per claim)."""

@@ -172,3 +172,35 @@ def test_a_users_claim_is_not_traced_in_the_parent_to_plan():
 
     list(_run_shared(run, tasks, [c]))
     assert seen == [tasks] and calls == []
+
+
+@needs_fork
+def test_the_copies_of_a_shared_run_are_marked_and_the_run_log_counts_its_seconds_once(tmp_path):
+    """Each record copied from the one run at n (results.COPY_OF: not a field, never in results.json) names the
+    record it copies, the record at the size the run was made at; the run log gives the seconds there only, and
+    `stiefelsym speed` reads them once (the copies keep no seconds)."""
+    import json
+    from stiefelsym.cli import _run_log
+    from stiefelsym.cli.speed import timed
+    from stiefelsym.results import COPY_OF
+    c = _claim("r-free", _commutator_symmetric)
+    results = runner.verify([c], methods=("auto",), jobs=2, seed=3)
+    sized = [res for res in results if res.n is not None]
+    by_n: dict = {}
+    for res in sized:
+        by_n.setdefault(res.n, []).append(res)
+    for n, group in by_n.items():
+        owners = [res for res in group if not hasattr(res, COPY_OF)]
+        assert len(owners) == 1
+        assert all(getattr(res, COPY_OF) == (n, owners[0].r) for res in group if res is not owners[0])
+    assert all(COPY_OF not in res.to_json() for res in results)
+    rows = json.loads(_run_log(results, {}))["seconds"]
+    assert [row[:5] for row in rows] == [[r.claim, r.n, r.r, r.method, r.variant] for r in results]
+    assert sum(1 for row in rows if row[5] is not None) == len(results) - sum(len(g) - 1 for g in by_n.values())
+    assert all(row[6] == {"copy of": list(getattr(r, COPY_OF))} for row, r in zip(rows, results) if len(row) > 6)
+    counted = sum(1 for r in results if r.n is not None and not hasattr(r, COPY_OF))
+    records = [{"claim": r.claim, "n": r.n, "r": r.r, "method": r.method, "variant": r.variant} for r in results]
+    log = tmp_path / "run-log.json"
+    log.write_text(_run_log(results, {}))
+    assert sum(1 for r in timed(records, log) if r["n"] is not None and r["seconds"] is not None) == counted
+

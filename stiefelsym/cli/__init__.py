@@ -30,7 +30,7 @@ from stiefelsym.claims import CATALOG, CatalogError, ClaimTimeout, Claim, Regist
 from stiefelsym.methods.hard import HARD_CASES
 from stiefelsym.run import rerun
 from stiefelsym.run.pool import AMOUNTS, DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, Terminated, amount_problem, raise_on_sigterm
-from stiefelsym.results import Result, dump_results, load_results, parse_json, write_atomic
+from stiefelsym.results import COPY_OF, Result, dump_results, load_results, parse_json, write_atomic
 from stiefelsym.scene import SizeError
 
 _report = lazy("stiefelsym.reports.report", globals(), "_report")
@@ -446,8 +446,16 @@ def stable(results: list[Result], meta: dict[str, Any]) -> tuple[list[Result], d
 
 
 def _run_log(results: list[Result], meta: dict[str, Any]) -> str:
-    log = {"meta": {k: meta.get(k) for k in VOLATILE_META + ("command", "commit")},
-           "seconds": [[r.claim, r.n, r.r, r.method, r.variant, r.seconds] for r in results]}
+    """The run log: the volatile meta data and, record by record, [claim, n, r, method, variant, seconds].  A record
+    copied from another run of the same graph (a graph without r, run once per n: its record is every r's) has no
+    seconds of its own: null, and a seventh entry {"copy of": [n, r]} names the record that has them, so that a
+    reader that adds the seconds up counts the run once."""
+    rows: list[list[Any]] = []
+    for r in results:
+        source = getattr(r, COPY_OF, None)
+        rows.append([r.claim, r.n, r.r, r.method, r.variant, r.seconds] if source is None else
+                    [r.claim, r.n, r.r, r.method, r.variant, None, {"copy of": list(source)}])
+    log = {"meta": {k: meta.get(k) for k in VOLATILE_META + ("command", "commit")}, "seconds": rows}
     return json.dumps(log, indent=0) + "\n"
 
 

@@ -172,7 +172,9 @@ def speed(report_dir: Path | None, quick: bool, seed: int, no_hard: bool, model_
 
 def timed(records: list[dict[str, Any]], run_log: Path) -> list[dict[str, Any]]:
     """The records of a committed results.json (which leaves the timings out) with their seconds from the run
-    log of the same run beside it (run-log.json, not committed), where it is there and lists the same runs."""
+    log of the same run beside it (run-log.json, not committed), where it is there and lists the same runs.  A
+    record the log marks as a copy of another (one run of a graph without r, its record copied to every r) keeps
+    no seconds: the run is counted once, at the record it was made for."""
     try:
         seconds = json.loads(run_log.read_text(encoding="utf-8"))["seconds"]
     except (OSError, ValueError, KeyError):

@@ -21,7 +21,7 @@ from stiefelsym.claims import Claim, Registry, Size, statement_state
 from stiefelsym.methods.hard import hard_case
 from stiefelsym.methods.fixed_size import METHOD_RUNNERS, BudgetError, check_budget, expected_verdict, spaced_collections  # noqa: F401 (BudgetError is part of the runner API)
 from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, DEFAULT_TIMEOUT, GIB, MOST_GIB, MOST_SECONDS, Outcome, Terminated, WorkerPool, amount_problem  # noqa: F401
-from stiefelsym.results import PASSING, VERDICTS, Result
+from stiefelsym.results import COPY_OF, PASSING, VERDICTS, Result
 from stiefelsym.scene import SizeError
 from stiefelsym.ir import numbers_only
 from stiefelsym.ir import notation
@@ -828,8 +828,10 @@ def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome
     prove as printed (a correction proved for all n, r)."""
     failed: dict[tuple[int, str], None] = {}
     corrections: list[Task] = []
-    for i, outcome in _run_shared(run, tasks, claims, streams):
+    copies: dict[int, int] = {}
+    for i, outcome in _run_shared(run, tasks, claims, streams, copies):
         res = _settle(outcome, tasks[i], claims, seed, hard)
+        _mark_copy(res, tasks, copies.get(i))
         deliver(res)
         ci, n, _, m, _ = tasks[i]
         if res.verdict == "fails" and n is not None and claims[ci].corrections:
@@ -841,16 +843,27 @@ def run_with_corrections(run: Callable[[list[Task]], Iterable[tuple[int, Outcome
         for k in range(len(claims[ci].corrections)):
             corrections += [(ci, n, r, m, k) for n, r in planned]
     if corrections:
-        for i, outcome in _run_shared(run, corrections, claims, streams):
-            deliver(_settle(outcome, corrections[i], claims, seed, hard))
+        copies = {}
+        for i, outcome in _run_shared(run, corrections, claims, streams, copies):
+            res = _settle(outcome, corrections[i], claims, seed, hard)
+            _mark_copy(res, corrections, copies.get(i))
+            deliver(res)
+
+
+def _mark_copy(res: Result, tasks: list[Task], source: int | None) -> None:
+    """Mark ``res`` as the copy of the record of ``tasks[source]`` (:data:`COPY_OF`), when it is one."""
+    if source is not None:
+        setattr(res, COPY_OF, (tasks[source][1], tasks[source][2]))
 
 
 def _run_shared(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], tasks: list[Task],
-                claims: list[Claim], streams: bool = False) -> Iterable[tuple[int, Outcome]]:
+                claims: list[Claim], streams: bool = False,
+                copies: dict[int, int] | None = None) -> Iterable[tuple[int, Outcome]]:
     """(task index, outcome) for every task, in order, with the tasks of a graph that involves no dimension r
     run once per n (:func:`shared_size`): the run at (n, r0) is every run at (n, r), its record copied to
     each r (tasks and outcomes stay one per (claim, size, method, variant), so every budget, record and
-    report is as before).
+    report is as before).  ``copies`` (filled as the outcomes come): task index -> the index of the task whose
+    outcome this one's is a copy of (the task at the size the run was made at, else the first of them).
 
     ``streams`` (``run`` draws its tasks from an iterator as its workers come free: the local pool): the
     runs to make are handed over as they are found, so that looking at the claims' graphs (which traces
@@ -890,6 +903,8 @@ def _run_shared(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], task
             return
         outcomes = run(units)
     done: dict[int, Outcome] = {}
+    position = {t: k for k, t in enumerate(tasks)} if copies is not None else {}
+    first: dict[int, int] = {}      # unit -> the task whose record the others copy: the one at the size it ran at
     i = 0
 
     def ready() -> Iterator[tuple[int, Outcome]]:
@@ -901,6 +916,10 @@ def _run_shared(run: Callable[[list[Task]], Iterable[tuple[int, Outcome]]], task
             r = tasks[i][2]
             if got.kind == "ok" and isinstance(got.value, Result) and r is not None and got.value.r != r:
                 got = Outcome(got.kind, at_size(got.value, r), got.message, got.seconds)
+            if copies is not None:
+                k = first.setdefault(unit_of[i], position.get(units[unit_of[i]], i))
+                if k != i:
+                    copies[i] = k
             yield i, got
             i += 1
 
