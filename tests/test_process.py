@@ -959,3 +959,25 @@ def test_a_forked_attempt_prints_what_it_printed_once_and_the_parent_s_pending_o
                           timeout=120, stdin=subprocess.DEVNULL)
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout == "ABC\n", proc.stdout
+
+
+def _spin():
+    while True:
+        pass
+
+
+def _nap():
+    time.sleep(1.5)
+    return "rested"
+
+
+def test_a_cpu_limit_stops_a_computation_by_its_cpu_time_not_by_the_wall_clock():
+    """The dimension-free attempt of a run at a size is limited in CPU time (RLIMIT_CPU in its child), so whether
+    it ends in time is the computation's, not the load of the machine: a child that computes is stopped after
+    its CPU seconds (HardTimeout, as the wall limit), one that waits longer than that without computing is not."""
+    from stiefelsym.run.isolate import HardTimeout, run_isolated
+    t0 = time.monotonic()
+    with pytest.raises(HardTimeout):
+        run_isolated(_spin, 60, str, cpu_seconds=1)
+    assert time.monotonic() - t0 < 30
+    assert run_isolated(_nap, 20, str, cpu_seconds=1) == "rested"

@@ -48,8 +48,13 @@ def _child(rfd: int, wfd: int, parent: int, prctl: Any, payload: Callable[[], by
         os._exit(0)
 
 
-def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[BaseException], str]) -> Any:
-    """fn() in a forked child, killed after ``seconds``; its exceptions come back as ChildError."""
+def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[BaseException], str],
+                 cpu_seconds: float | None = None) -> Any:
+    """fn() in a forked child, killed after ``seconds``; its exceptions come back as ChildError.
+
+    ``cpu_seconds``: the child is stopped (HardTimeout) once it has used that much CPU time, whatever the wall
+    time it took (RLIMIT_CPU): a limit that decides which result a run gives is then the computation's, not the
+    machine's load (``seconds`` stays the wall limit behind it)."""
     if not hasattr(os, "fork"):
         return fn()
     from stiefelsym.run.pool import _death_signal_setup
@@ -66,6 +71,11 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
             os.dup2(out, 1)     # writes why it aborts to the standard output
             os.close(err)
             os.close(out)
+            if cpu_seconds is not None:
+                import math
+                import resource
+                soft = max(1, math.ceil(cpu_seconds))
+                resource.setrlimit(resource.RLIMIT_CPU, (soft, soft + 1))   # SIGXCPU at soft, SIGKILL at hard
 
         def payload() -> bytes:
             try:
@@ -82,13 +92,17 @@ def run_isolated(fn: Callable[[], Any], seconds: float, describe: Callable[[Base
     try:
         data = read_pipe(rfd, seconds, lambda: _kill(pid))
         if data is not None:
-            _, status = os.waitpid(pid, 0)
+            _, status, usage = os.wait4(pid, 0)
     finally:
         said, printed = _said(err), _said(out)
     if data is None:
         _forward(said, printed)
         raise HardTimeout()
     if not data:
+        if cpu_seconds is not None and os.WIFSIGNALED(status) and (os.WTERMSIG(status) == signal.SIGXCPU or (
+                os.WTERMSIG(status) == signal.SIGKILL and usage.ru_utime + usage.ru_stime >= cpu_seconds)):
+            _forward(said, printed)
+            raise HardTimeout()
         raise ChildDied(f"the child process died ({how_it_ended(status)}{_last_words(said + printed)})")
     kind, value = pickle.loads(data)
     if kind == "memory":        # (flint says so first: in the message, not printed)
