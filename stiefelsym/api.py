@@ -102,18 +102,28 @@ def _check_arguments(methods: tuple, sizes: Any, seed: Any, timeout: Any, memory
 
 def _check_traced_sizes(c: Claim, pairs: list[Size]) -> None:
     """ValueError for a claim of a claims file (``load(files=F)``) asked at a size its file was not traced at:
-    no code of the file runs in this process, so each size of a run must be one its child traced."""
-    from stiefelsym.run.userfile import TracedFunction
-    for f in [c.func] + [k.func for k in c.corrections]:
-        if isinstance(f, TracedFunction) and not f.symbolic():
-            have = set(f.sizes())
-            missing = [s for s in pairs if 1 <= s.r <= s.n and c.sizes.admits(s.n, s.r) and (s.n, s.r) not in have]
-            if missing:
-                raise ValueError(
-                    f"claim {c.id!r} of {f.path} was traced at the sizes given to load() only "
-                    f"({', '.join(f'({a},{b})' for a, b in sorted(have)) or 'none'}), not at "
-                    f"{', '.join(f'({s.n},{s.r})' for s in missing)}: pass the sizes to load(files=..., sizes=[...]), "
-                    f"or verify({c.id!r}, files=..., sizes=...), which traces the file at the run's sizes")
+    no code of the file runs in this process, so each size of a run must be one its child computed the claim's
+    graphs at (unless they have symbolic sizes), and its size condition (``where=``) and erratum sizes
+    (``fails_at=``), which the child tabled at n <= 16 and at the sizes given to load()."""
+    from stiefelsym.run.userfile import TracedFunction, _Lookup
+    funcs = [f for f in [c.func] + [k.func for k in c.corrections] if isinstance(f, TracedFunction)]
+    where = getattr(c.sizes, "where", None)
+
+    def traced(n: int, r: int) -> bool:
+        if isinstance(where, _Lookup) and not where.bounds_only and (n, r) not in where.table:
+            return False
+        if not c.sizes.admits(n, r):
+            return True     # refused by the run as outside the statement
+        if isinstance(c.fails_at, _Lookup) and (n, r) not in c.fails_at.table:
+            return False
+        return all(f.symbolic() or (n, r) in f.sizes() for f in funcs)
+    missing = [s for s in pairs if 1 <= s.r <= s.n and not traced(s.n, s.r)]
+    if missing:
+        raise ValueError(
+            f"claim {c.id!r} of a claims file was traced (its graphs, size condition and erratum sizes) in its file's "
+            f"child process only at its own sizes and those given to load(), not at "
+            f"{', '.join(f'({s.n},{s.r})' for s in missing)}: pass the sizes to load(files=..., sizes=[...]), or "
+            f"verify({c.id!r}, files=..., sizes=...), which traces the file at the run's sizes")
 
 
 def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
@@ -148,11 +158,14 @@ def verify(claims: ClaimRef | Iterable[ClaimRef] | None = None, *,
     methods = tuple(methods)
     sizes = None if sizes is None else list(sizes)
     _check_arguments(methods, sizes, seed, timeout, memory, jobs, budget)
+    # numpy's numbers are amounts too: the run and its records see plain floats
+    timeout = float(timeout)
+    memory, budget = (None if x is None else float(x) for x in (memory, budget))
     pairs: list[Size] | None = None if sizes is None else [
         _plain_size(_size_text(s) if isinstance(s, str) else s) for s in sizes]
     named = [claims] if isinstance(claims, (str, Claim)) else (None if claims is None else list(claims))
     ids = [c for c in named or () if isinstance(c, str)]
-    if named is not None and files and not ids:
+    if named and files and not ids:
         raise ValueError("files= names the claims files whose claims are verified by id (or all of them when no "
                          "claim is named); the claim objects given are verified as they are: name the file's claims "
                          "by id, or drop files=")

@@ -726,7 +726,7 @@ def main(argv: list[str] | None = None) -> int:
         try:
             with open(path, encoding="utf-8") as fh:
                 payload = json.load(fh)
-        except (OSError, ValueError) as e:
+        except (OSError, ValueError, RecursionError) as e:
             payload = f"not a readable JSON file ({type(e).__name__}: {e})"
         shared, records = (payload.get("certificates") or {}, payload.get("results", [payload])) \
             if isinstance(payload, dict) else (None, None)
@@ -765,6 +765,8 @@ def main(argv: list[str] | None = None) -> int:
                 if not any(coefficient(t["coef"]) != 0 for e in _all_entries(data) for t in e["terms"]):
                     print("  note: no hypothesis is used (every residual above expands to 0 by itself): what binds these "
                           "residuals to the claim's graph is their derivation, which `stiefelsym check` repeats")
+        if not any(r.get("certificate_data") is not None for r in records):    # said, not a silent pass
+            print(f"{path}: no certificate to check ({len(records)} record(s))")
     return 1 if bad else 0
 
 

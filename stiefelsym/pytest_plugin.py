@@ -40,6 +40,12 @@ def pytest_addoption(parser: Any) -> None:
 
 def pytest_configure(config: Any) -> None:
     config.addinivalue_line("markers", "stiefelsym: a claim run collected by the stiefelsym plugin")
+    if config.getoption("stiefelsym"):
+        from stiefelsym.run.pool import amount_problem
+        for name in ("timeout", "memory"):     # bad input before anything is loaded, not a failure of every claim
+            why = amount_problem(name, config.getoption(f"stiefelsym_{name}"))
+            if why:
+                raise pytest.UsageError(f"--stiefelsym-{name}: {why}")
     if config.getoption("stiefelsym") and config.getoption("pyargs"):
         # pytest finds a module named by --pyargs with importlib, which imports every package above it in this
         # process before any collection: only the installed catalog is named that way

@@ -348,8 +348,9 @@ def test_the_checker_does_not_import_the_rewriting_system():
     # the bound on a coefficient's expansion before it is expanded: about 20 lines; no denominator that may vanish
     # at a size: about 20 lines; the memos of the denominators and of that test: about 20 lines; the note on a
     # certificate that uses no hypothesis: about 10 lines; a certificate a results file holds once: about 10 lines;
-    # REJECTED, not a traceback, for a file that is not a results file: about 6 lines)
-    assert len(path.read_text(encoding="utf-8").splitlines()) < 773
+    # REJECTED, not a traceback, for a file that is not a results file, and a line for a file with no certificate:
+    # about 8 lines)
+    assert len(path.read_text(encoding="utf-8").splitlines()) < 775
 
 
 ZERO = "((kappa + 1)**2 - kappa**2 - 2*kappa - 1)"   # the zero polynomial, not written as 0

@@ -6,6 +6,8 @@ a file named ``test_*.py``, one reached by getattr, by assignment or through a h
 from __future__ import annotations
 
 
+import pytest
+
 pytest_plugins = ["pytester"]
 
 DOTTED = '''
@@ -306,3 +308,12 @@ def test_python_files_with_a_folder_are_matched_as_pytest_matches_them(pytester)
     result = pytester.runpytest_subprocess("--stiefelsym", "--stiefelsym-method", "modular", "--stiefelsym-size",
                                            "3,2", "-p", "no:cacheprovider")
     result.assert_outcomes(failed=1, passed=1)
+
+
+@pytest.mark.parametrize("option", ["--stiefelsym-timeout=nan", "--stiefelsym-timeout=-1", "--stiefelsym-memory=0"])
+def test_a_bad_budget_is_a_usage_error_not_a_failure_of_every_claim(pytester, option):
+    pytester.makepyfile(good_claims=TRUE)
+    result = pytester.runpytest_subprocess("--stiefelsym", str(pytester.path), "--stiefelsym-method", "modular",
+                                           option, "-p", "no:cacheprovider")
+    assert result.ret == pytest.ExitCode.USAGE_ERROR, result.stdout.str() + result.stderr.str()
+    assert "must be a positive number" in result.stderr.str()

@@ -142,3 +142,11 @@ def test_the_checker_rejects_a_file_that_is_not_a_results_file(tmp_path, capsys)
         assert "REJECTED" in capsys.readouterr().out, text
     assert check_main([str(tmp_path / "absent.json")]) == 1
     assert "not a readable JSON file" in capsys.readouterr().out
+    deep = tmp_path / "deep.json"
+    deep.write_text('{"results": ' + "[" * 100000 + "]" * 100000 + "}")
+    assert check_main([str(deep)]) == 1 and "not a readable JSON file" in capsys.readouterr().out
+    # a file with nothing to check says so (exit 0: nothing is rejected)
+    for text in ("{}", '{"results": []}'):
+        path = tmp_path / "empty.json"
+        path.write_text(text)
+        assert check_main([str(path)]) == 0 and "no certificate to check" in capsys.readouterr().out

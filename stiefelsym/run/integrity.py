@@ -16,6 +16,7 @@ from typing import Any, Callable, Iterable
 from stiefelsym.certificate_check import check_certificate
 from stiefelsym.claims import Claim, Registry, Size
 from stiefelsym.results import canonical_json as _canonical
+from stiefelsym.run.pool import amount_problem
 
 
 def proof_for_every_size(get: Callable[[str], Any]) -> bool:
@@ -680,8 +681,7 @@ def check_results(records: list[dict], registry: Registry, echo: Callable[[str],
         if rerun and r.get("method") != "free":
             # under the budget of the run that made the file (what the exact method may try depends on it)
             budget = (meta or {}).get("timeout")
-            budget = float(budget) if isinstance(budget, (int, float)) and not isinstance(budget, bool) \
-                and 0 < budget <= 1e9 else None
+            budget = None if amount_problem("timeout", budget) else float(budget)
             again_fixed = run_one(claim, size, r.get("method"), r.get("seed") or 0, func,
                                  variant=r.get("variant"), hard=hard, timeout=budget)
             if again_fixed.verdict != r.get("verdict"):

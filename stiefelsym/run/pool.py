@@ -46,8 +46,9 @@ def amount_problem(name: str, x: object) -> str:
     """Why ``x`` is not an amount ``name`` of :data:`AMOUNTS` ("" when it is one): a positive int or float up to
     its largest.  nan fails every comparison and inf exceeds the largest, so both are refused (nan would switch
     a time limit off; inf reached select() and int())."""
+    import numbers
     unit, most = AMOUNTS[name]
-    if type(x) not in (int, float) or not (0 < x <= most):   # type: ignore[operator]
+    if not isinstance(x, numbers.Real) or isinstance(x, bool) or not (0 < x <= most):   # numpy's numbers too
         return f"the {name} must be a positive number of {unit}, at most {most:g}, not {x!r}"
     return ""
 #: a worker retires after a job once its resident memory has grown by more than this (bytes) since it

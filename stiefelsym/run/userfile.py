@@ -1326,7 +1326,7 @@ class _Lookup:
         v = self.table.get((n, r))
         if v is None:
             raise NoGraph(f"the claim's {self.what} was evaluated in its claims file's child process at the sizes "
-                          f"the command needed only, not at ({n},{r})")
+                          f"the run needed only, not at ({n},{r})")
         if type(v) is _Recorded:
             v.throw()
         return v

@@ -1,0 +1,9 @@
+#!/bin/bash
+T=$1; shift
+PY="env PYTHONPATH=/tmp/s94h2/repo /work/main/.venv/bin/python"
+cd /tmp/s94h2/files
+for j in 1 2; do
+  /usr/bin/time -f "j$j %e s" timeout 300 $PY -m stiefelsym verify --jobs $j --format json --no-report "$@" > /tmp/s94h2/out/$T.j$j.json 2> /tmp/s94h2/out/$T.j$j.err
+  echo "rc j$j: $?"; tail -1 /tmp/s94h2/out/$T.j$j.err
+done
+$PY /tmp/s94h2/files/cmpjson.py /tmp/s94h2/out/$T.j1.json /tmp/s94h2/out/$T.j2.json
