@@ -59,8 +59,12 @@ class deadline:
     :meth:`__exit__`, which disarms it) the alarm raises nothing."""
 
     def __init__(self, seconds: float | None, what: str,
-                 timeout: Callable[[str], BaseException] = ClaimTimeout) -> None:
+                 timeout: Callable[[str], BaseException] = ClaimTimeout, cpu: bool = False) -> None:
         self.seconds, self.what, self.timeout = seconds, what, timeout
+        #: ``cpu``: the seconds are the process's CPU time (ITIMER_PROF), not the wall clock's: a limit of an engine
+        #: computation that decides which route a record takes is then the computation's, not the machine's load
+        #: (never for code of a claims file, which may wait without computing)
+        self.cpu = cpu
         self.armed = False
         self.raised: list[BaseException] = []
 
@@ -68,23 +72,26 @@ class deadline:
         if self.seconds is None or not hasattr(signal, "SIGALRM") \
                 or threading.current_thread() is not threading.main_thread():
             return self
-        self.outer = signal.getitimer(signal.ITIMER_REAL)
+        self.timer, self.signum, self.clock = (signal.ITIMER_PROF, signal.SIGPROF, time.process_time) if self.cpu \
+            else (signal.ITIMER_REAL, signal.SIGALRM, time.monotonic)
+        self.outer = signal.getitimer(self.timer)
         left = self.outer[0]
         self.limit = min(self.seconds, left) if left > 0 else self.seconds
         self.old_hook = sys.unraisablehook
         sys.unraisablehook = self._swallowed
         # the C module's signal(): the same handlers, without the enum conversion of the signal
         # module's wrapper (a few microseconds, on every exact run)
-        self.old = _signal.signal(signal.SIGALRM, self._expire)
+        self.old = _signal.signal(self.signum, self._expire)
         self.armed = True
-        self.t0 = time.monotonic()
-        signal.setitimer(signal.ITIMER_REAL, self.limit, REFIRE_SECONDS)
+        self.t0 = self.clock()
+        signal.setitimer(self.timer, self.limit, REFIRE_SECONDS)
         return self
 
     def _expire(self, signum: int, frame: Any) -> None:
         if frame is not None and frame.f_code in _OWN:
             return      # entering (the block, not yet begun, gets the next alarm) or leaving (disarmed there)
-        self.raised.append(self.timeout(f"{self.what} did not finish within {self.limit:.0f} s"))
+        self.raised.append(self.timeout(f"{self.what} did not finish within {self.limit:.0f} s"
+                                        f"{' of CPU time' if self.cpu else ''}"))
         raise self.raised[-1]
 
     def _swallowed(self, info: Any) -> None:
@@ -97,12 +104,12 @@ class deadline:
         if not self.armed:
             return False
         self.armed = False
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        _signal.signal(signal.SIGALRM, self.old)
+        signal.setitimer(self.timer, 0)
+        _signal.signal(self.signum, self.old)
         sys.unraisablehook = self.old_hook
         left, every = self.outer
         if left > 0:
-            signal.setitimer(signal.ITIMER_REAL, max(left - (time.monotonic() - self.t0), 1e-3), every)
+            signal.setitimer(self.timer, max(left - (self.clock() - self.t0), 1e-3), every)
         return False
 
 

@@ -981,3 +981,21 @@ def test_a_cpu_limit_stops_a_computation_by_its_cpu_time_not_by_the_wall_clock()
         run_isolated(_spin, 60, str, cpu_seconds=1)
     assert time.monotonic() - t0 < 30
     assert run_isolated(_nap, 20, str, cpu_seconds=1) == "rested"
+
+
+def test_a_cpu_deadline_counts_cpu_time_and_nests_with_a_wall_deadline():
+    """deadline(..., cpu=True) (the engine's rank routes) stops a computation by its CPU seconds: waiting does
+    not count, computing does; inside a wall-clock deadline, leaving it restores the outer one untouched."""
+    import signal as _sig
+    from stiefelsym.claims import ClaimTimeout, deadline
+    with deadline(30, "outer"):
+        outer = _sig.getitimer(_sig.ITIMER_REAL)[0]
+        with deadline(0.3, "waiting", cpu=True):
+            time.sleep(0.6)            # no CPU time: not stopped
+        with pytest.raises(ClaimTimeout, match="of CPU time"):
+            with deadline(0.3, "spinning", cpu=True):
+                while True:
+                    pass
+        assert 0 < _sig.getitimer(_sig.ITIMER_REAL)[0] <= outer
+        assert _sig.getitimer(_sig.ITIMER_PROF)[0] == 0
+    assert _sig.getitimer(_sig.ITIMER_REAL)[0] == 0

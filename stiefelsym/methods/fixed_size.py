@@ -644,7 +644,7 @@ def _domain_matrix(M: Mat):
     return DomainMatrix.from_list_sympy(len(rows), len(rows[0]), rows)
 
 
-#: seconds the explicit kernel vectors of a rank below the printed one may take: the verdict rests on
+#: CPU seconds the explicit kernel vectors of a rank below the printed one may take: the verdict rests on
 #: the function-field rank alone, the vectors only illustrate it
 KERNEL_CERTIFICATE_SECONDS = 5.0
 
@@ -653,7 +653,8 @@ def _kernel_certificate(M: Mat, limit: int = 3) -> str:
     """Explicit kernel vectors over the function field, each checked to be annihilated by M (within
     KERNEL_CERTIFICATE_SECONDS; beyond that, the record says they were not computed)."""
     try:
-        with deadline(KERNEL_CERTIFICATE_SECONDS, "the explicit kernel vectors", lambda message: ExactTimeout(message)):
+        with deadline(KERNEL_CERTIFICATE_SECONDS, "the explicit kernel vectors", lambda message: ExactTimeout(message),
+                      cpu=True):
             return _kernel_vectors(M, limit)
     except ExactTimeout:
         return (f"; explicit kernel vectors not computed (beyond {KERNEL_CERTIFICATE_SECONDS:.0f} s; the rank over "
@@ -720,8 +721,9 @@ def _constant_minor_rank(M: Mat, field: Field) -> int:
     return rank
 
 
-#: seconds the symbolic function-field rank may take before the upper bound is taken at random
-#: points of prime fields instead (the lower bound is always exact)
+#: CPU seconds the symbolic function-field rank may take before the upper bound is taken at random
+#: points of prime fields instead (the lower bound is always exact); CPU time, so that which route a record
+#: takes does not depend on the machine's load
 SYMBOLIC_RANK_SECONDS = 5.0
 #: ... and where the rank at an exact point is below the printed one (the printed rank is then very likely too
 #: large, and only the function-field rank refutes it with certainty): the time that refutation may take, outside
@@ -836,7 +838,7 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
                 return decided
         try:
             with deadline(SYMBOLIC_RANK_SECONDS if randomized is not None else None,
-                          "the rank bound from rational relations", lambda message: ExactTimeout(message)):
+                          "the rank bound from rational relations", lambda message: ExactTimeout(message), cpu=True):
                 polys = _backend_polynomials(M)
                 bound = _coefficient_rank_bound(polys) if polys is not None else None
         except ExactTimeout:
@@ -856,7 +858,7 @@ def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None
             seconds = REFUTING_RANK_SECONDS
         try:
             with deadline(seconds if randomized is not None else None, "the function-field rank",
-                          lambda message: ExactTimeout(message)):
+                          lambda message: ExactTimeout(message), cpu=True):
                 generic = _function_field_rank(M)
         except ExactTimeout:
             generic = None
