@@ -204,7 +204,7 @@ def manakov_flow_for_a_squared(s):
     }
 
 
-@claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), unlabelled=("Theorem 4.3",), kind="lax", exact_max_n=6, exact_max_r={7: 1},
+@claim("manakov-lax", paper=("Manakov", "dot_XP2", "man"), unlabelled=("Theorem 4.3",), kind="lax", exact_max_n=6, exact_max_r={7: 2},
        exact_corank={7: 0},
        statement=r"\tfrac{d}{dt}\mathcal L_{man}(\lambda)=[\mathcal A_{man}(\lambda),\mathcal L_{man}(\lambda)],\quad "
                  r"\mathcal L_{man}=\Phi+\lambda A,\ \mathcal A_{man}=\mathbb A(\Phi)+\lambda B;\quad "

@@ -807,7 +807,7 @@ def manakov_coefficients(t, mu):
 
 
 @claim("manakov-dual-integrals", paper=("Chasles-Manakov", "man-dual", "MAN-LA2", "Manakov"), kind="pb",
-       sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), exact_max_n=4, exact_max_r={5: 1},
+       sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), exact_max_n=4, exact_max_r={5: 1, 6: 1},
        statement=r"2r<n:\ |a(\lambda)\mathcal L^*_{man}(\lambda)-w\mathbf I|=\sum_l w^{2r-2l}\mathcal J_{2l}(\lambda),\ "
                  r"\{\mathcal J_{2l}(\lambda),\mathcal J_{2m}(\mu)\}=0,\ \tfrac{d}{dt}\mathcal J_{2l}(\lambda)=0\ "
                  r"\text{along (dot\_XP2), (Manakov) for a generic }B\text{ and along (dot\_XP3*)},\ l,m=1,\dots,r")

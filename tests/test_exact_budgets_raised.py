@@ -180,3 +180,28 @@ def test_the_chasles_cones_are_proved_at_4_1_and_a_wrong_sign_refuted():
         return {"charpoly": s.lam * integrals[s.r] - d.det_matrix(s, s.scalar_matrix(s.lam, s.n, "n") - M)}
     res = run_exact(_claim(plus_pp), 4, 1, 0)
     assert res.verdict == "fails", (res.verdict, res.message)
+
+
+# -- two Manakov claims one size past their former budget (measured: manakov-lax at (7, 2) 4-5 s,
+# manakov-dual-integrals at (6, 1) 2 s on the equivariant chart) -------------------------------------
+
+def _manakov_j2_and_potential(s):
+    """(manakov-dual-integrals) with tr(XᵀAX) added to 𝒥_2(λ): not conserved by the Manakov flow (B = A²)."""
+    import stiefelsym.proofs.sec7_grassmannians as g
+    import stiefelsym.proofs.sec8_dual_lax_pair as d
+
+    def F(t):
+        return g.column(t, [d.manakov_coefficients(t, t.lam)[2] + t.tr(t.X.T @ t.A @ t.X)])
+    return {"d(J_2 + tr X^T A X)/dt": s.d(F, s.dirac_flow(m.H_manakov_power(2)))}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("cid,n,r,wrong", [("manakov-lax", 7, 2, _manakov_lax_wrong_b),
+                                           ("manakov-dual-integrals", 6, 1, _manakov_j2_and_potential)])
+def test_the_manakov_claims_raised_are_proved_and_a_corrupted_function_refuted(cid, n, r, wrong):
+    c = load_catalog().get(cid)
+    assert c.exact_at(n, r)
+    res = run_exact(c, n, r, 0)
+    assert res.verdict == "proved", (res.verdict, res.message)
+    bad = run_exact(c, n, r, 0, func=wrong)
+    assert bad.verdict == "fails", (bad.verdict, bad.message)
