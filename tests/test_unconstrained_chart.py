@@ -91,3 +91,27 @@ def test_the_catalog_claims_of_the_chart():
         r = run_one(cat[cid], size, "exact", 0)
         assert r.verdict == "proved", (cid, r.message)
         assert any(x.startswith(MARK) or f": {MARK}" in x for x in r.reductions), (cid, r.reductions)
+
+
+def test_a_graph_that_reads_coordinates_without_a_reason_skips_the_equivariant_chart(monkeypatch):
+    """Its looks at coordinates are recorded before any evaluation and no reviewed reason can be relied on: the
+    equivariant chart's values would be dropped, so it is not evaluated; the verdict and the record are the same."""
+    import stiefelsym.methods.fixed_size as fs
+    from stiefelsym.claims import load_catalog
+
+    charts: list = []
+    chart_checks = fs._chart_checks
+
+    def recording(key, *args, **kw):
+        charts.append(key[5])
+        return chart_checks(key, *args, **kw)
+    monkeypatch.setattr(fs, "_chart_checks", recording)
+    toy = fs.run_exact(_claim(entry_identity), 3, 2, 0)
+    assert toy.verdict == "proved" and any(d.startswith(MARK) for d in toy.reductions), toy.reductions
+    tangency = fs.run_exact(load_catalog().get("tangency"), 4, 2, 0)
+    assert tangency.verdict == "proved" and any(d.startswith(MARK) for d in tangency.reductions)
+    assert "equivariant" not in charts and charts.count("unconstrained") == 2, charts
+    # a graph that reads none goes to the equivariant chart as before
+    charts.clear()
+    assert fs.run_exact(_claim(lambda s: {"XtP": s.X.T @ s.P - s.X.T @ s.P}), 3, 2, 0).verdict == "proved"
+    assert charts and charts[0] == "equivariant", charts
