@@ -758,7 +758,7 @@ def dual_lax_matrices_determine_the_point(s):
 # -- r = n: the Lax pairs give integrals of every Manakov flow (the remark after DUAL) ---------------------
 
 @claim("dual-invariants-manakov-r-n", paper=("DUAL", "LA3", "Neumann_LA", "Manakov", "dot_XP2"), kind="pb",
-       sizes=admissible(n_max=5, where=lambda n, r: r == n, condition="r = n"), exact_max_n=3, exact_max_r={4: 4},
+       sizes=admissible(n_max=5, where=lambda n, r: r == n, condition="r = n"), exact_max_n=3, exact_max_r={4: 4, 5: 5},
        statement=r"r=n:\ \tr(X^TAX)=\tr A,\quad \tfrac{d}{dt}\tr\mathcal L_{neum}(\lambda)^k=0\ (k=1,2,3),\ "
                  r"\tfrac{d}{dt}\tr\mathcal L^*_{neum}(\lambda)^k=0\ (k=2,4)\ \text{along the Manakov flow (dot\_XP2), "
                  r"(Manakov)},\ B\ \text{generic}")
