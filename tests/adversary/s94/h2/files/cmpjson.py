@@ -1,4 +1,6 @@
-import json, sys, hashlib
+import json
+import sys
+import hashlib
 def load(p):
     try:
         d = json.load(open(p))

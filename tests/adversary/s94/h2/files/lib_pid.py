@@ -1,6 +1,7 @@
 """Library path: claims whose graph depends on the process (first pid seen in this process lineage, a counter of
 calls), verified in-process with jobs=1 and jobs=2 (auto, sizes n = 5, 6)."""
-import os, sys
+import os
+import sys
 import stiefelsym
 from stiefelsym import admissible, claim
 

@@ -1,4 +1,5 @@
-import json, sys
+import json
+import sys
 from collections import defaultdict
 d = json.load(open(sys.argv[1]))
 agg = defaultdict(list)

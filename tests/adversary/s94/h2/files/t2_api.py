@@ -1,4 +1,6 @@
-import sys, traceback, stiefelsym, math
+import sys
+import stiefelsym
+import math
 F = "/tmp/s94h2/files/f3_door.py"
 def tr(name, f):
     try:

@@ -1,5 +1,6 @@
 """Truth of the user claims of f1, f2, f5 at random points of T*V(n, r) (numpy), compared with every record."""
-import json, sys
+import json
+import sys
 import numpy as np
 
 rng = np.random.default_rng(1)

@@ -1,4 +1,6 @@
-import json, re, sys
+import json
+import re
+import sys
 import numpy as np
 rng = np.random.default_rng(3)
 src = open("/tmp/s94h2/files/c6/f6_many.py").read()
