@@ -522,7 +522,7 @@ def rigid_body_euler_poisson(s):
     }
 
 
-@claim("ym-reduced-neumann", paper=("YM", "Euler**", "mag0", "iden1"), kind="id", sizes=ON_V_NN1,
+@claim("ym-reduced-neumann", paper=("YM", "Euler**", "mag0", "iden1"), unlabelled=("Theorem 9.2",), kind="id", sizes=ON_V_NN1,
        statement=r"T^*V_{n,n-1}/SO(n-1)\cong so(n)\times S^{n-1}:\quad \dot\Omega=[A,e_n\otimes e_n],\quad \dot e_n=\Omega e_n,"
                  r"\quad \Omega=\Phi,\ e_n\otimes e_n=\mathbf I_n-XX^T")
 def reduced_neumann_is_euler_star_star(s):
@@ -541,7 +541,7 @@ def reduced_neumann_is_euler_star_star(s):
     }
 
 
-@claim("ym-charge", paper=("YM", "mag6", "mag0"), kind="id", sizes=ON_V_NN1,
+@claim("ym-charge", paper=("YM", "mag6", "mag0"), unlabelled=("Theorem 9.2",), kind="id", sizes=ON_V_NN1,
        statement=r"F_\Omega=\pr_{e_n^\perp}(\Omega)=X\Psi X^T,\quad X^TF_\Omega X=\Psi:\quad "
                  r"(F_\Omega,e_n,\dot e_n)\in\mathcal O_\eta\times_sTS^{n-1}\ \text{on}\ \Psi^{-1}(\mathcal O_\eta)")
 def yang_mills_field_lies_on_the_orbit_of_the_charge(s):
@@ -817,7 +817,7 @@ def spectral_checks(s, momentum, H, F=None):
     return checks
 
 
-@claim("magnetic-spectral-invariants", paper=("perelomov", "mag-euk", "mag-nor", "mag-mom-stief"), kind="pb",
+@claim("magnetic-spectral-invariants", paper=("perelomov", "mag-euk", "mag-nor", "mag-mom-stief"), unlabelled=("Theorem 9.5",), kind="pb",
        sizes=ON_V_N2,
        statement=r"\{\tr\mathcal L_\epsilon(\lambda)^k,H\}_\epsilon=0,\ \{\tr\mathcal L_\epsilon(\lambda)^k,"
                  r"\tr\mathcal L_\epsilon(\mu)^m\}_\epsilon=0,\quad \mathcal L_\epsilon=\lambda\Phi_\epsilon+XX^T-\lambda^2A,\ k,m=1,2,3")
@@ -831,7 +831,7 @@ def magnetic_spectral_invariants(s):
     return checks
 
 
-@claim("magnetic-spectral-invariants-any-rank", paper=("perelomov", "mag-mom-stief", "twisted"), kind="pb",
+@claim("magnetic-spectral-invariants-any-rank", paper=("perelomov", "mag-mom-stief", "twisted"), unlabelled=("Theorem 9.5",), kind="pb",
        sizes=admissible(n_max=4),
        statement=r"\{\tr\mathcal L_F(\lambda)^k,H_{neum,\kappa}\}_F=0,\ \{\tr\mathcal L_F(\lambda)^k,"
                  r"\tr\mathcal L_F(\mu)^m\}_F=0,\quad \mathcal L_F=\lambda\Phi_F+XX^T-\lambda^2A,\ k,m=1,2,3")

@@ -233,7 +233,7 @@ def manakov_lax_pair_for_a_squared(s):
     return {"Lax": s.d(lambda t: t.Phi + t.lam * t.A, flow) - comm(M, L)}
 
 
-@claim("manakov-integrals", paper=("man", "SO(n)-inv"), kind="pb",
+@claim("manakov-integrals", paper=("man", "SO(n)-inv"), unlabelled=("Remark 4.1",), kind="pb",
        statement=r"\{\tr(\lambda A+\Phi)^k,\tr(\mu A+\Phi)^m\}=0,\ k,m=1,2,3;\quad "
                  r"\tfrac{d}{dt}\tr(\lambda A+\Phi)^k=\tfrac{d}{dt}\Psi=\tfrac{d}{dt}P^TP=0\ \text{along (5) of Section 4}")
 def manakov_integrals_commute(s):
@@ -392,7 +392,7 @@ def H_normal(t):
     return t.killing(t.Phi, t.Phi) / 2
 
 
-@claim("noether-normal-metric", paper=("bols-jov", "SO(n)-inv", "normal_metric", "man", "com"), kind="pb",
+@claim("noether-normal-metric", paper=("bols-jov", "SO(n)-inv", "normal_metric", "man", "com"), unlabelled=("Remark 4.1",), kind="pb",
        statement=r"\{\Phi^*(C^\infty(so(n))),C^\infty(T^*V_{n,r})^{SO(n)}\}=0:\ \{\Phi_\xi,\Psi_\eta\}="
                  r"\{\Phi_\xi,(p_i,p_j)\}=\{\tr\Phi^4,(p_i,p_j)\}=\{\tr(\lambda A+\Phi)^3,(p_i,p_j)\}=0;\quad \{H_0,\Phi_\xi\}=\{H_0,\tr\Phi^4\}="
                  r"\{H_0,\Psi_\eta\}=\{H_0,(p_i,p_j)\}=0")

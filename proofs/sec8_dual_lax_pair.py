@@ -567,7 +567,7 @@ def rotation(s):
     return (s.Ir - s.eta) @ (s.Ir + s.eta).inv()
 
 
-@claim("gen-chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), kind="geo",
+@claim("gen-chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), unlabelled=("Remark 8.2",), kind="geo",
        sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1, 7: 1},
        statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}=\begin{pmatrix}\mathbf I_n&0\\0&B^{-1}"
                  r"\end{pmatrix}\mathcal V(X,P),\ \det(\mathcal V(XB,PB)^TB(\lambda)\mathcal V(XB,PB))="
@@ -707,7 +707,7 @@ def line_pair_tangency(t):
     return (e.T @ R @ e) @ (p.T @ R @ p) - (e.T @ R @ p) @ (p.T @ R @ e)
 
 
-@claim("poisson-sphere-chasles", paper=("Chasles-Manakov", "sp1", "P_q"), kind="geo",
+@claim("poisson-sphere-chasles", paper=("Chasles-Manakov", "sp1", "P_q"), unlabelled=("Corollary 8.7",), kind="geo",
        sizes=admissible(n_max=5, n_min=2, r_max=1, condition="r = 1, n >= 2"),
        statement=r"r=1,\ B=-A^{-1}:\ A\dot e=(A^{-1}e,e)\,p-(A^{-1}e,p)\,e,\ \ \Sigma=\mathrm{span}\{e,p\}="
                  r"\mathrm{span}\{e,A\dot e\},\ \ \tfrac{d}{dt}\det(U^TR_\lambda U)=0,\ "
@@ -757,7 +757,7 @@ def dual_lax_matrices_determine_the_point(s):
 
 # -- r = n: the Lax pairs give integrals of every Manakov flow (the remark after DUAL) ---------------------
 
-@claim("dual-invariants-manakov-r-n", paper=("DUAL", "LA3", "Neumann_LA", "Manakov", "dot_XP2"), kind="pb",
+@claim("dual-invariants-manakov-r-n", paper=("DUAL", "LA3", "Neumann_LA", "Manakov", "dot_XP2"), unlabelled=("Remark 8.1",), kind="pb",
        sizes=admissible(n_max=5, where=lambda n, r: r == n, condition="r = n"), exact_max_n=3, exact_max_r={4: 4, 5: 5},
        statement=r"r=n:\ \tr(X^TAX)=\tr A,\quad \tfrac{d}{dt}\tr\mathcal L_{neum}(\lambda)^k=0\ (k=1,2,3),\ "
                  r"\tfrac{d}{dt}\tr\mathcal L^*_{neum}(\lambda)^k=0\ (k=2,4)\ \text{along the Manakov flow (dot\_XP2), "

@@ -95,3 +95,31 @@ def test_a_statement_without_a_label_is_named_by_its_printed_number():
     assert labels(["man"], ["Theorem 4.3"]) == "(3) §4 in Theorem 4.2 [man], Theorem 4.3"
     declared = {name for c in load_catalog() for name in c.unlabelled}
     assert "Theorem 4.3" in declared and declared <= {k for k, v in unlabelled.items() if not v}
+
+
+@pytest.mark.skipif(not PAPER.exists(), reason="the paper is not next to the repository")
+def test_every_unlabelled_statement_a_claim_checks_is_named_by_it():
+    """The paper's statements without a label are numbered by its \\newtheorem counters (Theorem, Proposition, Lemma
+    and Corollary share one per section, a Remark has its own; the appendices are sections 9 and 10): Remarks 3.1,
+    4.1, 4.2, 8.1 and 8.2, Corollary 8.7, Theorems 4.3, 9.2 and 9.5, Proposition 4.6.  Each that a claim checks is
+    named by that claim; Remark 3.1 (at r = n, (5) §3 is the right-invariant geodesic flow on SO(n)) is checked by no
+    claim of the catalog."""
+    unlabelled = paperref.unlabelled_statements(PAPER.read_text(encoding="utf-8"))
+    bare = {k for k, v in unlabelled.items() if not v}
+    assert bare == {"Remark 3.1", "Remark 4.1", "Theorem 4.3", "Remark 4.2", "Proposition 4.6", "Remark 8.1",
+                    "Remark 8.2", "Corollary 8.7", "Theorem 9.2", "Theorem 9.5"}
+    naming: dict[str, set[str]] = {}
+    for c in load_catalog():
+        for name in c.unlabelled:
+            naming.setdefault(name, set()).add(c.id)
+    assert naming == {
+        "Remark 4.1": {"manakov-integrals", "noether-normal-metric"},
+        "Theorem 4.3": {"manakov-lax"},
+        "Remark 4.2": {"gram-not-in-involution-with-psi"},
+        "Proposition 4.6": {"invariant-metrics"},
+        "Remark 8.1": {"dual-invariants-manakov-r-n"},
+        "Remark 8.2": {"gen-chasles2"},
+        "Corollary 8.7": {"poisson-sphere-chasles"},
+        "Theorem 9.2": {"ym-reduced-neumann", "ym-charge"},
+        "Theorem 9.5": {"magnetic-spectral-invariants", "magnetic-spectral-invariants-any-rank"},
+    }
