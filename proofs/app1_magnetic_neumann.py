@@ -638,7 +638,7 @@ def monopole_checks(s, sign):
     return checks
 
 
-@claim("ym-monopole", paper=("YM", "mag6"), kind="id",
+@claim("ym-monopole", nature="formula", paper=("YM", "mag6"), kind="id",
        sizes=admissible(n_max=3, n_min=3, r_min=2, r_max=2, stated_n_max=3, condition="n = 3, r = 2"),
        equivariance="e_3 = e_1 x e_2 is read from coordinates, but (g e_1) x (g e_2) = det(g) g (e_1 x e_2) for g "
                     "in O(3), so under (X, P, A) -> (gX, gP, gAg^T) every residual becomes g R g^T (those even in "
@@ -759,7 +759,7 @@ def cpb_reduction_checks(s, block):
     return checks
 
 
-@claim("cpb-reduction-stiefel", paper=("Euler", "Poisson", "CPB", "N0_XP2"), kind="id",
+@claim("cpb-reduction-stiefel", nature="statement", paper=("Euler", "Poisson", "CPB", "N0_XP2"), kind="id",
        sizes=admissible(n_max=5, n_min=3, where=lambda n, r: r == n, condition="r = n >= 3: T*SO(n), n - r >= 2"),
        fails_at=lambda n, r: True,
        place="the last sentence of the paragraph “Symmetric Clebsch–Perelomov–Bogoyavlenski rigid body systems” in §9",

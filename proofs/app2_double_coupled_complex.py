@@ -108,7 +108,7 @@ def double_neumann_flow(s):
     }
 
 
-@claim("double-neumann-dual-lax", paper=("dual-D", "LA3*D", "D-eq", "D-L"), kind="lax", exact_max_n=2,
+@claim("double-neumann-dual-lax", nature="formula", paper=("dual-D", "LA3*D", "D-eq", "D-L"), kind="lax", exact_max_n=2,
        fails_at=lambda n, r: True,
        place="the off-diagonal blocks of 𝓛(λ) in (5) §10, Theorem 10.1",
        erratum="""Theorem 10.1: with (I_n − λA)^{-1} in the off-diagonal blocks of 𝓛(λ), as printed in (5) §10,
@@ -138,7 +138,7 @@ def double_lax_at_the_diagonal(s, flipped):
             "𝓐(λ) − 𝓐*_neum(λ)": A_dual_double(s, z) - A_dual_euclidean(s)}
 
 
-@claim("double-neumann-dual-lax-extends-la3", paper=("dual-D", "LA3*D", "LA3", "LA4"), kind="id", exact_max_n=3,
+@claim("double-neumann-dual-lax-extends-la3", nature="formula", paper=("dual-D", "LA3*D", "LA3", "LA4"), kind="id", exact_max_n=3,
        fails_at=lambda n, r: True,
        place="the off-diagonal blocks of 𝓛(λ) in (5) §10, Theorem 10.1",
        erratum="""The sentence before Theorem 10.1 says that (5) §10 extends the Lax representation (1) §8: at
@@ -190,7 +190,7 @@ def double_neumann_printed_integral(s):
     return {"(X^T Y' - Y^T X') - (N + N^T)/2": printed - (noether + noether.T) * Fraction(1, 2)}
 
 
-@claim("double-neumann-symmetry-group", encodes='R ∈ GL(n, ℝ)', paper=("dual-D", "D-eq"), kind="dim", exact_max_n=7,
+@claim("double-neumann-symmetry-group", nature="size", encodes='R ∈ GL(n, ℝ)', paper=("dual-D", "D-eq"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
        place="the paragraph after Theorem 10.1",
        erratum="""After Theorem 10.1 the matrix integral XᵀẎ − YᵀẊ is said to come from the GL(n, ℝ)-symmetry
@@ -292,7 +292,7 @@ def coupled_flow_checks(s, Q_Pi):
     return checks
 
 
-@claim("coupled-neumann-flow", paper=("C-neumann", "C-eq", "C-L"), kind="id", exact_max_n=3,
+@claim("coupled-neumann-flow", nature="formula", paper=("C-neumann", "C-eq", "C-L"), kind="id", exact_max_n=3,
        exact_max_r={4: 1, 5: 1, 6: 1, 7: 1},
        fails_at=lambda n, r: True,
        place="the last line of (7) §10, the equation for Q̇",
@@ -369,7 +369,7 @@ _BIG_ERRATUM = """with the printed L(ν) and A(ν) = L₊(ν) the flow does not 
 BIG_CORRECTION = "(9) §10: −ν⁻¹ in front of the last term of L(ν), and dL/dt = [A(ν), L(ν)]"
 
 
-@claim("coupled-big-lax-normal", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
+@claim("coupled-big-lax-normal", nature="formula", paper=("so(n,n)", "C-eq"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
        place="the big Lax pair (9) §10",
        slips=("A(ν) = L₊(λ) for L₊(ν) in (9) §10",),
@@ -447,7 +447,7 @@ def coupled_dual_lax(s):
     return {"LA3*C": dual_coupled_residual(s, H_coupled(NORMAL), diagonal)}
 
 
-@claim("coupled-perturbed-big-lax", paper=("so(n,n)", "C-neumann"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
+@claim("coupled-perturbed-big-lax", nature="formula", paper=("so(n,n)", "C-neumann"), kind="lax", exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: n >= 2,
        place="the big Lax pair (9) §10",
        slips=("the references (10) and (11), for (9) §10 and for the matrices of Theorem 10.2, in the paragraph "
@@ -621,7 +621,7 @@ def complex_lax_residual(s, flipped):
     return derivative(s, L, z, flow_complex(s, z)) - comm(L(s, z), A_dual_complex(s, z))
 
 
-@claim("complex-neumann-dual-lax", paper=("dual-complex", "LA3*", "W-eq", "W-L"), kind="lax",
+@claim("complex-neumann-dual-lax", nature="formula", paper=("dual-complex", "LA3*", "W-eq", "W-L"), kind="lax",
        exact_max_n=SYMBOLIC_N_MAX,
        fails_at=lambda n, r: True,
        place="the off-diagonal blocks of 𝓛(λ) in (15) §10, Theorem 10.3",
@@ -646,7 +646,7 @@ def complex_neumann_dual_lax_corrected(s):
     return {"d𝓛(λ)/dt − [𝓛(λ), 𝓐(λ)]": complex_lax_residual(s, lambda t: t.resolvent(t.lam))}
 
 
-@claim("complex-neumann-momentum-algebra", encodes='the conservation of u(n)', paper=("u(1)", "W-eq"), kind="dim", exact_max_n=7,
+@claim("complex-neumann-momentum-algebra", nature="size", encodes='the conservation of u(n)', paper=("u(1)", "W-eq"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: r != n,
        place="the sentence after (16) §10",
        erratum="""After Theorem 10.3 the symmetries are said to give the conservation of the u(n) and u(1)ⁿ

@@ -13,7 +13,7 @@ def entries(M, m, k):
     return [[M[i, j] for j in range(k)] for i in range(m)]
 
 
-@claim("stiefel-top-rank", encodes='both V_{n,n} and V_{n,n−1} are diffeomorphic to SO(n)', paper=("cond_X*",), kind="geo", section="1", sizes=ON_O_N, exact_max_n=4,
+@claim("stiefel-top-rank", nature="statement", encodes='both V_{n,n} and V_{n,n−1} are diffeomorphic to SO(n)', paper=("cond_X*",), kind="geo", section="1", sizes=ON_O_N, exact_max_n=4,
        fails_at=lambda n, r: True,
        place="the sentence “In particular, …” after (1) §1",
        erratum="""The introduction says that V_{n,n} is diffeomorphic to SO(n).  By (1) §1, V_{n,n} = {X : XᵀX = I_n}

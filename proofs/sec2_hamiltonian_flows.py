@@ -407,7 +407,7 @@ def generic_adjoint_orbit_dimension(s):
                                   kernel=ad_phi_kernel(s))}
 
 
-@claim("adjoint-orbit-regularity", paper=("2l",), kind="dim", exact_max_n=7,
+@claim("adjoint-orbit-regularity", nature="range", paper=("2l",), kind="dim", exact_max_n=7,
        fails_at=lambda n, r: n == 2 * r + 2,
        place="the paragraph before Lemma 2.5",
        erratum="""The paragraph before Lemma 2.5 says that the generic orbit in Φ(T*V) is regular for

@@ -348,7 +348,7 @@ def _extra_invariants(n: int, r: int) -> int:
 
 # Proposition 4.6 is a statement of §4 of the paper, about the metrics of §3: filed under §4, written here beside
 # the action on the fibre it is computed from
-@claim("invariant-metrics", paper=("SO(n-r)-action", "P-neutral"), unlabelled=("Proposition 4.6",), kind="dim", sizes=admissible(5, n_min=2),
+@claim("invariant-metrics", nature="range", paper=("SO(n-r)-action", "P-neutral"), unlabelled=("Proposition 4.6",), kind="dim", sizes=admissible(5, n_min=2),
        exact_max_n=7, section="4",
        fails_at=lambda n, r: _extra_invariants(n, r) > 0,
        place="Proposition 4.6 and its proof",

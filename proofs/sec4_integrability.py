@@ -285,7 +285,7 @@ def A_man_dual(s):
     return A_man_dual_at(s, s.X, s.P, inverse_of_A_plus_lambda(s))
 
 
-@claim("manakov-dual-lax", paper=("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3"), kind="lax", exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1},
+@claim("manakov-dual-lax", nature="formula", paper=("man-dual", "MAN-LA", "MAN-LA2", "LA-MAN3"), kind="lax", exact_max_n=2, exact_max_r={3: 2, 4: 1, 5: 1, 6: 1},
        fails_at=lambda n, r: n >= 2,
        place="the matrix 𝓐*_man(λ) of (9) §4, in Theorem 4.4",
        erratum="""Theorem 4.4: with the printed (9) §4, whose entries contain (A + λI_n)^{-1}, the
@@ -343,7 +343,7 @@ def bracket_gram_psi(s):
     return s.bracket(gram, lambda t: t.killing(t.Psi, t.Psi))
 
 
-@claim("gram-not-in-involution-with-psi", paper=("so(n)+so(r)", "SO(n)-inv"), unlabelled=("Remark 4.2",), kind="not", expect="nonzero",
+@claim("gram-not-in-involution-with-psi", nature="literal", paper=("so(n)+so(r)", "SO(n)-inv"), unlabelled=("Remark 4.2",), kind="not", expect="nonzero",
        fails_at=lambda n, r: r in (1, n),
        place="Remark 4.2, after Theorem 4.5",
        erratum="""Remark 4.2 after Theorem 4.5 (the functions (p_i, p_j) do not Poisson-commute with ⟨Ψ, Ψ⟩,

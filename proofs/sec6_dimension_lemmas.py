@@ -268,7 +268,7 @@ def generic_leaf_rank(n):
     return n * n - n
 
 
-@claim("pencil-leaves-singular", paper=("dimension",), kind="dim",
+@claim("pencil-leaves-singular", nature="range", paper=("dimension",), kind="dim",
        sizes=admissible(5), exact_max_n=7, equivariance=EQUIVARIANCE_X,
        fails_at=lambda n, r: r == 1 and n <= 2,
        place="the inequality (5) §6 in the proof of Theorem 6.1",
@@ -316,7 +316,7 @@ def pencil_so_rows(s, l1, l2, x):
     return so_rows(s, x, True) * l1 + so_rows(s, x - s.A, False) * l2
 
 
-@claim("pencil-gl-isomorphism", paper=("central", "LAMBDA12"), kind="dim", exact_max_n=7,
+@claim("pencil-gl-isomorphism", nature="statement", paper=("central", "LAMBDA12"), kind="dim", exact_max_n=7,
        sizes=admissible(5, n_min=2, condition="n >= 2 (so(1) = 0)"), fails_at=lambda n, r: True,
        place="the sentence before (4) §6",
        erratum="""§6 says: “For λ₂ ≠ 0, the bracket Λ_{λ₁,λ₂} is isomorphic to the canonical Lie–Poisson
@@ -616,7 +616,7 @@ def l5_l6_matrix(s, printed):
     return s.mat([list(row) for row in zip(*columns)]), len(unknowns)
 
 
-@claim("pencil-l5-l6", paper=("L5", "L6"), kind="dim",
+@claim("pencil-l5-l6", nature="formula", paper=("L5", "L6"), kind="dim",
        sizes=admissible(5, r_max=3), exact_max_n=7, equivariance="the system is built from the claim's own parameters (no chart coordinate)",
        fails_at=lambda n, r: r >= 3,
        place="the proof of Lemma 6.3, at (17) §6",

@@ -157,7 +157,7 @@ def neumann2_kernel(s):
     }
 
 
-@claim("neumann2-h-size", encodes='Let h = Ψ(X_0, P_0), v = X_0 X_0^T', paper=("NEUMANN2",), kind="dim",
+@claim("neumann2-h-size", nature="formula", encodes='Let h = Ψ(X_0, P_0), v = X_0 X_0^T', paper=("NEUMANN2",), kind="dim",
        sizes=admissible(5), exact_max_n=7,
        fails_at=lambda n, r: r < n,
        place="the proof of Theorem 7.1",

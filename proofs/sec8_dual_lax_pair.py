@@ -388,7 +388,7 @@ def I2l_general_line(s, l):
     return acc
 
 
-@claim("2r-integrals-general-line", paper=("2r-integrals",), kind="id",
+@claim("2r-integrals-general-line", nature="literal", paper=("2r-integrals",), kind="id",
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r <= n, condition="2r <= n"), exact_max_n=2, exact_max_r={3: 1, 4: 2, 5: 2, 6: 1, 7: 1},
        fails_at=lambda n, r: r >= 2,
        place="the general line 𝓘₂ₗ(λ) of (5) §8, read literally at l = 1",
@@ -848,7 +848,7 @@ def manakov_j2r_vanishes(s):
 
 # -- the printed size of the spectral curve's identity matrix ---------------------------------------
 
-@claim("spectral-curve-identity-size", encodes='|a(λ)𝓛*_neum(λ) − w I_n|', paper=("2r-integrals",), kind="dim", sizes=admissible(n_max=5),
+@claim("spectral-curve-identity-size", nature="size", encodes='|a(λ)𝓛*_neum(λ) − w I_n|', paper=("2r-integrals",), kind="dim", sizes=admissible(n_max=5),
        fails_at=lambda n, r: n != 2 * r,
        place="the unnumbered display of the spectral curve before (4) §8",
        erratum="""The spectral curve of 𝓛*_neum(λ) is printed |a(λ) 𝓛*_neum(λ) − w I_n| = w^{2r} + ⋯.  The Lax
@@ -880,7 +880,7 @@ def nontrivial_dual_integrals(n, r):
     return sum((n - l + 1) - 1 for l in range(1, r + 1))
 
 
-@claim("dual-integrals-exceed-half-leaf", paper=("2r-integrals", "dimension"), kind="dim", sizes=admissible(n_max=5),
+@claim("dual-integrals-exceed-half-leaf", nature="range", paper=("2r-integrals", "dimension"), kind="dim", sizes=admissible(n_max=5),
        fails_at=lambda n, r: r <= 2,
        place="the remark after (5) §8 (“Since the number N is bigger than half of dimension …”)",
        erratum="""After the count N = (n − 1) + ⋯ + (n − r) = r(n − r) + r(r − 1)/2 of the nontrivial integrals of
@@ -928,7 +928,7 @@ def dual_integrals_exceed_half_leaf_corrected(s):
                                               "N exceeds half of 2l plus the [r/2] Casimirs exactly when r >= 3")}
 
 
-@claim("manakov-curve-identity-size", encodes='|a(λ)𝓛*_man(λ) − w I_n|', paper=("Chasles-Manakov", "MAN-LA2"), kind="dim",
+@claim("manakov-curve-identity-size", nature="size", encodes='|a(λ)𝓛*_man(λ) − w I_n|', paper=("Chasles-Manakov", "MAN-LA2"), kind="dim",
        sizes=admissible(n_max=5, where=lambda n, r: 2 * r < n, condition="2r < n"), fails_at=lambda n, r: True,
        place="the paragraph “Chasles Theorem for Manakov Flows” before Theorem 8.6",
        erratum="""The paragraph on the Chasles theorem for Manakov flows takes the integrals J_{2l}(λ) as the
@@ -951,7 +951,7 @@ def printed_identity_has_the_size_of_the_manakov_dual_lax_matrix_corrected(s):
 
 # -- printed sizes in the proofs of Gen_Chasles and Gen_Chasles2 -----------------------------------------
 
-@claim("vvb-left-factor-size", encodes='left multiplication by the block matrix diag(I_{n-r}, B^{-1})', paper=("VVB", "Gen_Chasles2"), kind="dim", exact_max_n=7,
+@claim("vvb-left-factor-size", nature="size", encodes='left multiplication by the block matrix diag(I_{n-r}, B^{-1})', paper=("VVB", "Gen_Chasles2"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: True,
        place="the text after the display in the proof of Theorem 8.5",
        erratum="""In the proof of Theorem 8.5, the matrix V(XB, PB) diag(B^{-1}, B^{-1}) of the unnumbered display is
@@ -974,7 +974,7 @@ def printed_left_factor_has_the_size_of_vv_corrected(s):
                                                          "the rows of V of (6) §8; corrected: the size of diag(I_n, B^{-1})")}
 
 
-@claim("vv-printed-shape", encodes='the 2r × (n + r) matrix', paper=("VV", "Gen_Chasles2", "VVB"), kind="dim", exact_max_n=7,
+@claim("vv-printed-shape", nature="size", encodes='the 2r × (n + r) matrix', paper=("VV", "Gen_Chasles2", "VVB"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
        place="the sentence introducing (6) §8, the text before Theorem 8.5 and the proof of Theorem 8.5",
        erratum="""The matrix V(X, P) of (6) §8, whose 2r columns (e_i, 0) and (p_i, E_i), i = 1, …, r (E_i the i-th
@@ -999,7 +999,7 @@ def printed_shape_of_vv_corrected(s):
             "columns of V": Count(V.shape[1], 2 * s.r, "the columns of V of (6) §8; corrected: 2r")}
 
 
-@claim("gen-chasles-momentum-ranges", paper=("Gen_Chasles", "tangency"), kind="dim", exact_max_n=7,
+@claim("gen-chasles-momentum-ranges", nature="size", paper=("Gen_Chasles", "tangency"), kind="dim", exact_max_n=7,
        sizes=admissible(n_max=5), fails_at=lambda n, r: n != r,
        place="the display in the proof of Theorem 8.2",
        erratum="""In the proof of Theorem 8.2, the quadratic equation of the 2r-planes tangent to the cone

@@ -117,6 +117,14 @@ _OWN = (deadline.__enter__.__code__, deadline.__exit__.__code__)
 
 
 KINDS = ("id", "lax", "pb", "dim", "not", "geo")
+#: the natures of the place of the paper an erratum fails through (``@claim(nature=...)``), in the order the reports
+#: count them: "formula", a misprint in a printed formula (a sign, an inverse, a letter or a term, the formula meant
+#: being the one the paper's own derivation gives); "size", a misprinted size, index range or group of a size (Iₙ for
+#: I₂ᵣ, i = 1, …, n for i = 1, …, r, GL(n) for GL(r)); "range", a statement that fails at some of the sizes it is made
+#: for (a bound on n and r, or exceptional sizes, missed); "statement", a wrong statement (a condition, a count or an
+#: identification that is false as made, whatever the size); "literal", a statement that fails only when read
+#: literally, where a hypothesis is tacit or a formula schematic
+NATURES = ("formula", "size", "range", "statement", "literal")
 #: the realizations of T*V a claim may be stated on (the keys of stiefelsym.scene.REALIZATIONS, a test holds them
 #: equal: the scene is not imported here)
 REALIZATION_NAMES = ("standard", "metric")
@@ -338,6 +346,10 @@ class Claim:
     #: the names the paper prints ("Theorem 4.3"); a statement with an equation's label inside it is named through
     #: that label (:func:`stiefelsym.paperref.printed`)
     unlabelled: tuple[str, ...] = ()
+    #: of an erratum, the nature of the place of the paper it fails through, one of :data:`NATURES` ("formula": a
+    #: misprint in a printed formula, "size", "range", "statement", "literal"); empty: not said (a claim that is
+    #: no erratum, or one of a claims file that does not say)
+    nature: str = ""
 
     @property
     def reviewed(self) -> bool:
@@ -433,6 +445,13 @@ class Claim:
                 problem = _place_problem(slip)
                 if problem:
                     raise ValueError(f"claim {self.id}: slip {slip!r}: {problem.replace('a place', 'a slip')}")
+        if self.nature:
+            if self.nature not in NATURES:
+                raise ValueError(f"claim {self.id}: nature {self.nature!r} is not one of {', '.join(NATURES)} (the "
+                                 "kind of place of the paper an erratum fails through)")
+            if not self.erratum.strip():
+                raise ValueError(f"claim {self.id}: nature= says what kind of place of the paper an erratum fails "
+                                 "through; a claim without erratum= has none")
 
     def correction(self, description: str, changes: int = 1, expect: str | None = None,
                    exact_max_r: dict[int, int] | None = None, exact_corank: dict[int, int] | None = None,
@@ -769,7 +788,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
           expect: str = "holds", exact_max_n: int | None = None, exact_max_r: dict[int, int] | None = None,
           exact_corank: dict[int, int] | None = None, fails_at: Callable[[int, int], bool] | None = None, erratum: str = "", equivariance: str = "",
           free_max_r: int = 0, place: str = "", slips: Iterable[str] = (), encodes: str = "",
-          unlabelled: Iterable[str] = ()):
+          unlabelled: Iterable[str] = (), nature: str = ""):
     """Register a claim.  The function's docstring (one sentence) goes into the report.
 
     ``paper``: the paper's equation labels the claim checks; a user's own claim may have none.
@@ -794,11 +813,15 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
     prints (det X = 1 for "diffeomorphic to SO(n)", an equation between sizes for "the 2r × (n + r) matrix"), those
     words, in the ASCII scripts of the reports (I_n, B^{-1}); the report heads the display as their encoding.
     ``unlabelled``: the statements the claim checks that the paper prints without a label (and with no labelled
-    equation inside), by their printed names ("Theorem 4.3"): the report names them beside the labels."""
+    equation inside), by their printed names ("Theorem 4.3"): the report names them beside the labels.
+    ``nature``: of an erratum, the kind of place of the paper it fails through, one of :data:`NATURES`: "formula" (a
+    misprint in a printed formula), "size" (a misprinted size or index range), "range" (a statement that fails at
+    some of the sizes it is made for), "statement" (a wrong statement), "literal" (a statement that fails only when
+    read literally); the headline of the reports counts the places of each nature."""
     if exact_max_n is None:
         exact_max_n = DIM_EXACT_MAX_N if kind == "dim" else IDENTITY_EXACT_MAX_N
     for name, value in (("statement", statement), ("erratum", erratum), ("equivariance", equivariance),
-                        ("realization", realization), ("expect", expect)):
+                        ("realization", realization), ("expect", expect), ("nature", nature)):
         if not isinstance(value, str):
             raise ValueError(f"claim {id!r}: {name} is a str, not {value!r}")
     if not isinstance(paper, str) and (not isinstance(paper, (tuple, list)) or any(type(x) is not str for x in paper)):
@@ -821,7 +844,7 @@ def claim(id: str, *, paper: str | Iterable[str] = (), kind: str, section: str |
                   place=" ".join(place.split()) if isinstance(place, str) else place,
                   slips=tuple(slips) if not isinstance(slips, str) else (slips,),
                   free_max_r=free_max_r, encodes=" ".join(encodes.split()),
-                  unlabelled=(unlabelled,) if isinstance(unlabelled, str) else tuple(unlabelled))
+                  unlabelled=(unlabelled,) if isinstance(unlabelled, str) else tuple(unlabelled), nature=nature)
         if _ACTIVE[-1].reviewed or not _catalog_source(fn):
             # a catalog module imported by a user's file (for a helper) registers its claims with the catalog's
             # loading only, not as the file's own (a function that only names a catalog module is the file's)

@@ -122,3 +122,36 @@ def test_the_catalog_declares_the_slips_its_errata_report_in_passing():
     assert "Iᵣ₊₁ for Iₗ₊₁" in slips["2r-integrals-general-line"][0]
     assert "(10) and (11)" in slips["coupled-perturbed-big-lax"][0]
     assert "L₊(λ) for L₊(ν)" in slips["coupled-big-lax-normal"][0]
+
+
+def test_an_erratum_says_the_nature_of_its_place():
+    """``nature=``: what kind of place of the paper an erratum fails through, one of the catalog's natures, and only
+    of an erratum (the headline of the reports counts the places of each nature)."""
+    from stiefelsym.claims import NATURES
+    assert NATURES == ("formula", "size", "range", "statement", "literal")
+    assert _claim(fails_at=lambda n, r: True, erratum="h is r x r.", nature="size").nature == "size"
+    assert _claim(fails_at=lambda n, r: True, erratum="h is r x r.").nature == ""
+    with pytest.raises(ValueError, match="nature 'typo' is not one of formula, size"):
+        _claim(fails_at=lambda n, r: True, erratum="h is r x r.", nature="typo")
+    with pytest.raises(ValueError, match="nature= says what kind of place"):
+        _claim(nature="formula")
+
+
+def test_the_decorator_checks_the_nature_is_a_string():
+    from stiefelsym.claims import claim
+    with pytest.raises(ValueError, match="nature is a str"):
+        claim("c", paper="NEUMANN2", kind="dim", nature=("size",))  # type: ignore[arg-type]
+
+
+def test_every_erratum_of_the_catalog_says_the_nature_of_its_place(catalog):
+    """Each of the catalog's errata declares the nature of the place it fails through (the reading of the paper is
+    in the erratum's words; the counts of the headline rest on these declarations), and two errata that fail through
+    one place say the same nature."""
+    errata = [c for c in catalog if c.erratum]
+    assert errata and all(c.nature for c in errata)
+    by_place: dict[str, set[str]] = {}
+    for c in errata:
+        by_place.setdefault(c.place, set()).add(c.nature)
+    assert all(len(natures) == 1 for place, natures in by_place.items() if place)
+    assert {c.id for c in errata if c.nature == "literal"} == {"gram-not-in-involution-with-psi",
+                                                                "2r-integrals-general-line"}

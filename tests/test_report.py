@@ -880,6 +880,28 @@ def test_one_misprint_repaired_by_one_correction_in_two_statements_is_counted_on
         assert "distinct places" not in doc and "the same place" not in doc
 
 
+def test_the_headline_counts_the_places_of_each_nature():
+    """The referee's C1: the headline counts the places of the paper the errata fail through by their nature, as the
+    catalog declares it of each erratum (``@claim(nature=...)``): two statements that fail through one misprint in a
+    printed formula count one such place; a claims file's report counts none."""
+    rs = (_erratum_pair("double-neumann-dual-lax", ["dual-D"], place="the blocks of (5) §10")
+          + _erratum_pair("double-neumann-dual-lax-extends-la3", ["dual-D"], place="the blocks of (5) §10")
+          + _erratum_pair("spectral-curve-identity-size", ["2r-integrals"], place="the display before (4) §8"))
+    md = render_markdown(rs)
+    assert ("3 fail as printed (from 2 distinct places of the paper: 1 misprint in a printed formula (a sign, an "
+            "inverse, a letter or a term) and 1 misprinted size or index range (Iₙ for I₂ᵣ, GL(n) for GL(r)); "
+            "double-neumann-dual-lax and double-neumann-dual-lax-extends-la3 fail through one place") in md
+    tex = render_latex(rs)
+    assert "1 misprint in a printed formula" in tex and r"\ensuremath{I_{n}} for \ensuremath{I_{2r}}" in tex
+    one = _erratum_pair("spectral-curve-identity-size", ["2r-integrals"])
+    assert "1 fails as printed (through 1 misprinted size or index range (Iₙ for I₂ᵣ" in render_markdown(one)
+    two = one + _erratum_pair("manakov-dual-lax", ["man-dual"])
+    assert ("2 fail as printed (each through a place of the paper of its own: 1 misprint in a printed formula "
+            "(a sign, an inverse, a letter or a term) and 1 misprinted size") in render_markdown(two)
+    for doc in (render_markdown(rs, {"claims_files": ["mine.py"]}), render_latex(rs, {"claims_files": ["mine.py"]})):
+        assert "misprint in a printed formula" not in doc
+
+
 def test_the_headline_counts_a_correction_shared_by_two_statements_once():
     """Two statements repaired by one correction at one place (one error of the paper) count one correction proved
     for every n and r, and the headline says how many statements the corrections repair."""

@@ -283,6 +283,9 @@ class ClaimResults:
         #: the statements without a label of the paper the claim checks, by their printed names ("Theorem 4.3"),
         #: for the catalog's claim only
         self._unlabelled = [] if self.shadows or self.claims_file else unlabelled_statements(self.id)
+        #: of an erratum of the catalog, the nature of the place of the paper it fails through ("formula", "size",
+        #: ...: :data:`stiefelsym.claims.NATURES`); "" for a claims file's claim
+        self.nature = "" if self.shadows or self.claims_file else erratum_nature(self.id)
         self.printed: list[Result] = []
         self.variants: dict[str, list[Result]] = {}
 
@@ -1340,6 +1343,13 @@ def unlabelled_statements(cid: str) -> list[str]:
     return list(c.unlabelled) if c is not None else []
 
 
+def erratum_nature(cid: str) -> str:
+    """The nature of the place of the paper a catalog erratum fails through (``@claim(..., nature=...)``): "formula",
+    "size", "range", "statement" or "literal"; "" where the claim says none."""
+    c = _catalog_claims().get(cid)
+    return c.nature if c is not None else ""
+
+
 def encoded_statements() -> dict[str, str]:
     """The catalog's errata whose display is the tool's encoding of words of the paper (a size read as an equation
     between sizes, "diffeomorphic to SO(n)" read as det X = 1), not a formula the paper prints, each with those words
@@ -2020,18 +2030,51 @@ def _kind_words(kind: str, claims: list[ClaimResults]) -> str:
     return words
 
 
-def _misprint_words(errata: list[ClaimResults]) -> str:
-    """How many places of the paper the failures come from, where some statements are repaired by one correction.
-    A place is what fails as printed there, whatever its nature (a false statement, a misprinted size or index, or a
-    statement taken literally where a hypothesis is tacit or a formula schematic): "errors" or "misprints" would
-    say more than the records do, which tell these apart only in the words of each erratum."""
-    shared = shared_misprints(errata)
-    if not shared:
+#: the natures of the places of the paper the errata fail through (:data:`stiefelsym.claims.NATURES`), in the
+#: headline's words: (one, several, what it is), each said with its count
+NATURE_WORDS = {
+    "formula": ("misprint in a printed formula", "misprints in a printed formula",
+                "a sign, an inverse, a letter or a term"),
+    "size": ("misprinted size or index range", "misprinted sizes or index ranges", "Iₙ for I₂ᵣ, GL(n) for GL(r)"),
+    "range": ("statement that fails at some of the sizes it is made for",
+              "statements that fail at some of the sizes they are made for",
+              "a bound on n and r, or exceptional sizes, missed"),
+    "statement": ("wrong statement", "wrong statements", "a condition or an identification false as made"),
+    "literal": ("statement that fails only when read literally", "statements that fail only when read literally",
+                "where a hypothesis is tacit or a formula schematic"),
+}
+
+
+def _nature_words(errata: list[ClaimResults], shared: list[list[ClaimResults]]) -> str:
+    """How many places of the paper of each nature the errata fail through (a group of :func:`shared_misprints`
+    is one place), "8 misprints in a printed formula (a sign, …), 7 misprinted sizes or index ranges (…), …"; ""
+    unless every erratum says its nature (a claims file's need not)."""
+    if not errata or any(c.nature not in NATURE_WORDS for c in errata):
         return ""
+    places = Counter(c.nature for c in errata)
+    for g in shared:
+        places[g[0].nature] -= len(g) - 1
+    words = [f"{places[k]} {one if places[k] == 1 else several} ({what})"
+             for k, (one, several, what) in NATURE_WORDS.items() if places[k]]
+    return ", ".join(words[:-1]) + " and " + words[-1] if len(words) > 1 else words[0]
+
+
+def _misprint_words(errata: list[ClaimResults]) -> str:
+    """How many places of the paper the failures come from, of each nature (:func:`_nature_words`, as the catalog
+    declares it of each erratum), where some statements are repaired by one correction.  Without the natures, a
+    place is what fails as printed there, whatever its nature (a false statement, a misprinted size or index, or a
+    statement taken literally where a hypothesis is tacit or a formula schematic)."""
+    shared = shared_misprints(errata)
+    kinds = _nature_words(errata, shared)
+    if not shared:
+        if not kinds:
+            return ""
+        return f" (through {kinds})" if len(errata) == 1 else f" (each through a place of the paper of its own: {kinds})"
     distinct = len(errata) - sum(len(g) - 1 for g in shared)
     names = [", ".join(c.id for c in g[:-1]) + f" and {g[-1].id}" for g in shared]
-    return (f" (from {distinct} distinct places of the paper, each a false statement, a misprinted size or index, or "
-            f"a statement taken literally where a hypothesis is tacit or a formula schematic: {names[0]} fail through "
+    what = (f": {kinds}; " if kinds else ", each a false statement, a misprinted size or index, or a statement taken "
+            "literally where a hypothesis is tacit or a formula schematic: ")
+    return (f" (from {distinct} distinct places of the paper{what}{names[0]} fail through "
             "one place, repaired by one correction"
             + "".join(f"{'; and so do' if i == len(names) - 1 else '; so do'} {x}" for i, x in enumerate(names[1:], 1))
             + ")")
