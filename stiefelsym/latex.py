@@ -183,7 +183,7 @@ def _escape_with_math(text: str, scripts: dict[str, str]) -> str:
 #: the operators of the paper's words, upright in math, and its groups and Lie algebras, in math italic as the paper
 #: sets them ($SO(n)$, $so(r)$): (name, how it is set)
 _UPRIGHT_NAMES = {**{n: r"\mathop{\mathrm{%s}}\nolimits " % n for n in
-                     "det tr rank dim diag ad Ad span ddim Pf exp ker sgn".split()},
+                     "det tr rank dim diag ad Ad span ddim Pf exp ker sgn pr adj axial Sym".split()},
                   **{n: n for n in "SO GL Sp SU so gl sp su".split()}}
 #: ASCII characters a math run may contain besides letters and digits (no TeX special: _ ^ { } # % & $ \ ~; no quote,
 #: which math mode reads as a prime: "'G_I(V)^2'" would be a double superscript)
@@ -195,9 +195,22 @@ _PUNCTUATION = ",;:.!?"
 
 def _math_char(ch: str, scripts: dict[str, str]) -> bool:
     """Whether ``ch`` is a character of mathematics that text never has: a Greek letter, a script, a math symbol or
-    a letter of a math alphabet (ℝ, 𝔤, 𝒜), or a script of ASCII notation."""
-    return ch in scripts or ch in _SUP or ch in _SUB or (ord(ch) > 127 and ch not in _TEXT_ONLY and ch != NBSP
-                                                       and _unicode_math(ch) is not None)
+    a letter of a math alphabet (ℝ, 𝔤, 𝒜), a script of ASCII notation, or the mark of a time derivative or a
+    conjugate on a letter (Ẋ, ë₃, Z̄, Φ̇: a word of more letters with such a mark, Möbius, stays text by
+    :func:`_math_token`'s rule on runs of letters)."""
+    return ch in scripts or ch in _SUP or ch in _SUB or ch in _COMBINING or _marked_letter(ch) is not None or (
+        ord(ch) > 127 and ch not in _TEXT_ONLY and ch != NBSP and _unicode_math(ch) is not None)
+
+
+def _marked_letter(ch: str) -> str | None:
+    """The math of a Latin letter written with the marks of :data:`_COMBINING` in one character (Ẋ, ė, ë, Ȳ):
+    ``\\dot{X}``; None for any other character."""
+    base, *marks = unicodedata.normalize("NFD", ch)
+    if not marks or not base.isascii() or not base.isalpha() or any(m not in _COMBINING for m in marks):
+        return None
+    for m in marks:
+        base = _COMBINING[m] + "{" + base + "}"
+    return base
 
 
 def _math_token(core: str, scripts: dict[str, str]) -> bool:
@@ -213,13 +226,21 @@ def _math_token(core: str, scripts: dict[str, str]) -> bool:
         return False
     runs = re.findall(r"[A-Za-z]+", core)
     scripted = any(_math_char(c, scripts) for c in core)
-    # a product of matrices written together (PXᵀ, XXᵀ) is a run of capitals: mathematics where a math character
-    # says so (UNEXPECTED, LA1 are words and names)
-    if any(len(w) > 1 and w not in _UPRIGHT_NAMES and not (scripted and w.isupper() and len(w) <= 4) for w in runs):
+    # a product of matrices written together (PXᵀ, XXᵀ) is a run of capitals, a matrix times a vector or a scalar
+    # times a matrix (Aeₙ, wIₙ, fE₁) or a differential (de₁, ds²) two letters: mathematics where a math character
+    # says so (UNEXPECTED, LA1, of are words and names); a differential of a capital (dF, dX) is mathematics
+    # anywhere, and one of a small letter in a quotient of differentials (de₃/dt, d(XᵀX)/dt)
+    quotient = "/" in core
+
+    def letters(w: str) -> bool:
+        return (len(w) == 1 or w in _UPRIGHT_NAMES or bool(re.fullmatch(r"d[A-Z]", w))
+                or scripted and (w.isupper() and len(w) <= 4 or len(w) == 2)
+                or quotient and bool(re.fullmatch(r"d[a-z]", w)))
+    if not all(letters(w) for w in runs):
         return False
     if re.fullmatch(r"\d+(?:\.\d+)?e[-+]?\d+", core):     # a number in E notation
         return False
-    return any(len(w) == 1 for w in runs) or scripted
+    return any(len(w) == 1 or re.fullmatch(r"d[A-Za-z]", w) for w in runs) or scripted
 
 
 def _depth(text: str) -> int:
@@ -384,6 +405,10 @@ def tex_math(statement: str) -> str:
             out.append("_{" + "".join(_SUB[c] for c in piece) + "}")
         elif ord(piece) < 128:
             out.append(piece)
+        elif piece in _COMBINING and out and not out[-1].startswith(("^", "_")):
+            out[-1] = _COMBINING[piece] + "{" + out[-1].rstrip() + "}"      # Φ̇, 𝒳̇: the mark on the letter before
+        elif _marked_letter(piece) is not None:
+            out.append(_marked_letter(piece) or "")
         else:
             m = _unicode_math(piece)
             out.append(_cmd(m) if m is not None else r"\text{" + _tex_nonascii(piece) + "}")
@@ -762,10 +787,10 @@ _MATH_IDIOMS = (
 
 #: the dual Lax matrices of the paper, 𝓛*_neum, 𝓐*_man, ... written L*_neum, A*_man
 _DUAL_LAX = re.compile(r"(?<![A-Za-z])([LA])\*_(?=neum|man)")
-#: subscripts the PDF sets as one (the Markdown keeps them as written): the paper's named ones (H_neum, 𝓛*_man) with a
+#: subscripts the PDF sets as one (the Markdown keeps them as written): the paper's named ones (H_neum, 𝓛*_man, ω_mag) with a
 #: second index as the paper writes them (H_neum,κ as H_{neum,κ}; H_neum_0 and H_neum₀ as H_{neum_0}), a Lie algebra's
 #: (eta_so(r)) and two indices (Psi_ij)
-_TEX_SUBSCRIPTS = (re.compile(r"(?<=[^\W_]|\)|\*)_((?:neum|man)(?:,[^\s,;:.()]+|_[^\W_]+|[₀-₉]+)?)(?![^\W_])"),
+_TEX_SUBSCRIPTS = (re.compile(r"(?<=[^\W_]|\)|\*)_((?:neum|man|mag)(?:,[^\s,;:.()]+|_[^\W_]+|[₀-₉]+)?)(?![^\W_])"),
                    re.compile(r"(?<=[^\W_]|\))_((?:so|sp|gl|u)\([^()\s]*\))"),
                    re.compile(r"(?<=[^\W_]|\))_([ijklabpq][ijklabpq])\b"))
 

@@ -90,7 +90,25 @@ def test_check_names_read_as_mathematics():
     assert unicode_name("Phi X = P - X P^T X[1,1]") == "Φ X = P - X Pᵀ X, entry (1,1)"
     assert unicode_name("dPsi/dt") == "dΨ/dt" and unicode_name("H_kappa") == "H_κ"
     assert unicode_name("derivative along the printed flow") == "derivative along the printed flow"
-    assert tex_text("Ẋ") == r"\.{X}"
+    assert tex_text("Ẋ") == r"\ensuremath{\dot{X}}"     # a time derivative, in math as the paper sets it
+
+
+def test_the_mathematics_of_words_is_set_in_math_mode():
+    """What a word of mathematics looks like in the words of the reports, set in math mode by the one converter
+    (:func:`stiefelsym.latex.math_runs`), not letter by letter in the text font: a differential (de₁, de₃/dt, dF,
+    ds²), a matrix times a vector (Aeₙ), a time derivative (XᵀẎ, ė₃, Φ̇), the names of the paper's operators
+    (Sym(r), pr, adj) and the named subscripts (ω_mag, TW_{n,r}); words stay text (and/or, Möbius, de Vries)."""
+    from stiefelsym.latex import tex_escape, tex_words
+    assert tex_escape("ω = de₁ ∧ de₂ here") == r"\ensuremath{\omega  = de_{1} \wedge  de_{2}} here"
+    assert tex_escape("de₃/dt = Ωe₃") == r"\mbox{\ensuremath{de_{3}/dt = \Omega e_{3}}}"
+    assert tex_escape("dF onto Sym(r)") == r"\ensuremath{dF} onto \ensuremath{\mathop{\mathrm{Sym}}\nolimits (r)}"
+    assert tex_escape("XᵀẎ − YᵀẊ, (Aeₙ, eₙ), d(XᵀX)/dt") == (
+        r"\ensuremath{X^{T}\dot{Y} - Y^{T}\dot{X}}, \ensuremath{(Ae_{n}, e_{n})}, \ensuremath{d(X^{T}X)/dt}")
+    assert tex_escape("ė₃ and Φ̇") == r"\ensuremath{\dot{e}_{3}} and \ensuremath{\dot{\Phi}}"
+    assert tex_words("ω_mag on TW_{n,r}, pr_{e_n}(Ω), ds²_κ") == (
+        r"\ensuremath{\omega _{mag}} on \ensuremath{TW_{n,r}}, \ensuremath{\mathop{\mathrm{pr}}\nolimits _{e_{n}}(\Omega )}, "
+        r"\ensuremath{ds^{2}_{\kappa }}")
+    assert tex_escape("and/or Möbius de Vries") == r"and/or M\"{o}bius de Vries"
 
 
 def test_the_registered_words_of_a_correction_set_their_scripts():
@@ -205,7 +223,7 @@ def test_subscripts_of_lie_algebras_and_index_pairs_and_cross_products_in_the_pd
     text = "eta_so(r) = 0, Psi_so(n-r), Psi_ij, (P^T P)_ij, e_3 x de_3/dt, kernel_of x, H_neum,0"
     tex = tex_words(text)
     assert r"\_" not in tex.replace(r"kernel\_of", "")
-    assert r"\eta _{so(r)}" in tex and r"\ensuremath{\Psi _{ij}}" in tex and r"\ensuremath{\times} de" in tex
+    assert r"\eta _{so(r)}" in tex and r"\ensuremath{\Psi _{ij}}" in tex and r"\ensuremath{e_{3} \times  de_{3}/dt}" in tex
     assert r"\ensuremath{H_{neum,0}}" in tex      # the paper's named subscripts after any letter, not only 𝓛*
     assert unicode_words(text) == "η_so(r) = 0, Ψ_so(n-r), Ψ_ij, (Pᵀ P)_ij, e₃ × de₃/dt, kernel_of x, H_neum,0"
 
