@@ -891,8 +891,10 @@ def test_the_headline_counts_the_places_of_each_nature():
     assert ("3 fail as printed (from 2 distinct places of the paper: 1 misprint in a printed formula (a sign, an "
             "inverse, a letter or a term) and 1 misprinted size or index range (Iₙ for I₂ᵣ, GL(n) for GL(r)); "
             "double-neumann-dual-lax and double-neumann-dual-lax-extends-la3 fail through one place") in md
+    assert "[2r-integrals]); correction: one fix; nature: a misprinted size or index range\n" in md
     tex = render_latex(rs)
     assert "1 misprint in a printed formula" in tex and r"\ensuremath{I_{n}} for \ensuremath{I_{2r}}" in tex
+    assert "; nature: a misprint in a printed formula" in tex
     one = _erratum_pair("spectral-curve-identity-size", ["2r-integrals"])
     assert "1 fails as printed (through 1 misprinted size or index range (Iₙ for I₂ᵣ" in render_markdown(one)
     two = one + _erratum_pair("manakov-dual-lax", ["man-dual"])

@@ -1150,7 +1150,8 @@ def render_markdown(results: Sequence[Result], meta: dict[str, Any] | None = Non
     if errata:
         out += ["Fails as printed:", ""]
         out += [f"- `{c.id}`{_md_escape(_shadow_tag(c))} {_placed(c, _md_escape(labels(c.paper, c.unlabelled)), lambda s: _md_escape(unicode_words(s)))}"
-                + _md_escape(_listed_correction(c, unicode_words, errata if not meta.get("claims_files") else ()))
+                + _md_escape(_listed_correction(c, unicode_words, errata if not meta.get("claims_files") else ())
+                             + (_nature_tag(c) if not meta.get("claims_files") else ""))
                 for c in errata]
         out += [""]
 
@@ -2059,6 +2060,12 @@ def _nature_words(errata: list[ClaimResults], shared: list[list[ClaimResults]]) 
     return ", ".join(words[:-1]) + " and " + words[-1] if len(words) > 1 else words[0]
 
 
+def _nature_tag(c: ClaimResults) -> str:
+    """What an erratum in the list after the headline fails through, as the headline counts it ("; nature: a
+    misprinted size or index range"); "" where the catalog says nothing (a claims file's claim)."""
+    return f"; nature: a {NATURE_WORDS[c.nature][0]}" if c.nature in NATURE_WORDS else ""
+
+
 def _misprint_words(errata: list[ClaimResults]) -> str:
     """How many places of the paper the failures come from, of each nature (:func:`_nature_words`, as the catalog
     declares it of each erratum), where some statements are repaired by one correction.  Without the natures, a
@@ -2259,6 +2266,7 @@ def render_latex(results: Sequence[Result], meta: dict[str, Any] | None = None, 
         out += _tex_items([r"\texttt{" + tex_escape(c.id) + "}" + tex_escape(_shadow_tag(c)) + " "
                            + _placed(c, tex_labels(c.paper, c.unlabelled), tex_words)
                            + _listed_correction(c, tex_words, errata if not meta.get("claims_files") else ())
+                           + (tex_words(_nature_tag(c)) if not meta.get("claims_files") else "")
                            for c in errata])
     if not detail:
         out += [tex_escape("Every run, with the reductions its proof used (the chart of T*V, an equivariance, "
