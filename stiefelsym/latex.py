@@ -191,6 +191,13 @@ _MATH_ASCII = frozenset("()[]+-*/=<>|,")
 #: a binary operator or a relation standing alone between two math runs: "A + λIₙ", "XᵀP + PᵀX"
 _OPERATOR_TOKEN = frozenset("+−-=≤≥<>≠∈×·∧→↦⊂⊆⊥≅≈≡∘⊕⊗")
 _PUNCTUATION = ",;:.!?"
+#: quotation marks around words, text before and after the mathematics they quote (“V_{n,n} is SO(n)”)
+_OPENING_QUOTES = "“‘"
+_CLOSING_QUOTES = "”’"
+#: a word of mathematics and a word of text joined by a hyphen (SO(n)×SO(r)-invariant, 2r-plane, SO(n − r)-orbit):
+#: the words after it that the catalog's prose uses (not a name such as 2r-integrals, which stays text whole)
+_WORD_AFTER = re.compile(r"(.+?)(-(?:invariant|invariance|equivariant|orbits?|planes?|actions?|dimensional|symmetry)"
+                         r"(?:-[a-z]+)?)")
 
 
 def _math_char(ch: str, scripts: dict[str, str]) -> bool:
@@ -256,12 +263,20 @@ def math_runs(text: str, scripts: dict[str, str] | None = None) -> list[tuple[bo
     partner in the piece is left in the text."""
     scripts = scripts or {}
     tokens = re.split(r"([ \u00a0]+)", text)     # a no-break space (a bound relation) separates words too
+    if tokens[0][:1] in tuple(_OPENING_QUOTES):
+        tokens[:1] = ["", "", tokens[0]]
+    for i in range(2, len(tokens), 2):          # an opening quotation mark is text before the word it opens
+        lead = tokens[i][:len(tokens[i]) - len(tokens[i].lstrip(_OPENING_QUOTES))]
+        tokens[i - 1], tokens[i] = tokens[i - 1] + lead, tokens[i][len(lead):]
     words: list[list[Any]] = []              # [core, tail, math] of each word (tokens[2 i])
     for i in range(0, len(tokens), 2):
         token = tokens[i]
-        core = token.rstrip(_PUNCTUATION) if token not in ("...", "…", "⋯") else token
+        core = token.rstrip(_PUNCTUATION + _CLOSING_QUOTES) if token not in ("...", "…", "⋯") else token
         tail = token[len(core):]
         math = _math_token(core, scripts)
+        suffix = _WORD_AFTER.fullmatch(core) if not math else None
+        if suffix and _math_token(suffix.group(1), scripts):    # SO(n)×SO(r)-invariant, 2r-plane: a word after
+            core, tail, math = suffix.group(1), suffix.group(2) + tail, True
         word = core.strip("()[]")
         if math and word in ("a", "A", "s"):    # an article, a sentence's first word, a unit of seconds
             before = "".join(tokens[:i]).rstrip() + core[:len(core) - len(core.lstrip("(["))]
@@ -294,7 +309,7 @@ def math_runs(text: str, scripts: dict[str, str] | None = None) -> list[tuple[bo
     for k, (core, tail, math) in enumerate(words):
         if k:
             prev, space = words[k - 1], tokens[2 * k - 1]
-            joined = prev[2] and math and (
+            joined = prev[2] and math and not space.strip(" \u00a0") and (
                 not prev[1] and (prev[0] in _OPERATOR_TOKEN or core in _OPERATOR_TOKEN or prev[0] in _UPRIGHT_NAMES
                                  or prev[0] in ("Σ", "∑")
                                  or prev[0] in ("...", "…", "⋯") or core in ("...", "…", "⋯"))
@@ -750,10 +765,11 @@ def _fitted_display(body: str, pieces: list[str]) -> str:
 
 
 #: a script in ASCII notation in plain words: ^{...} or _{...} (one level of nested braces), ^ and digits
-#: (an optional minus), ^⊥, ^∞, or _ and one letter or digit that no letter or digit follows (I_n, F_Ω; not
-#: the underscore inside a name such as N0_XP2), or ^ and an integer or one letter in parentheses (the
+#: (an optional minus), ^⊥, ^∞, or _ and one letter or digit that no letter or digit but a Unicode script follows
+#: (I_n, F_Ω, a_i²; not the underscore inside a name such as N0_XP2), or ^ and an integer or one letter in parentheses (the
 #: parentheses of a negative power dropped, (μI_n - A)^(-1); kept in f^(k); a subscript _(m) stays as written)
-_ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|(?<=\^)\(-?(?:\d+|[^\W\d_])\)|-?\d+(?![^\W_])|⊥|∞|[^\W_](?![^\W_]))")
+_ASCII_SCRIPT = re.compile(r"(\^|_)(\{(?:[^{}]|\{[^{}]*\})*\}|(?<=\^)\(-?(?:\d+|[^\W\d_])\)|-?\d+(?![^\W_])|⊥|∞|[^\W_]"
+                           r"(?!(?![" + "".join(_SUP) + "".join(_SUB) + r"])[^\W_]))")
 
 
 _UNICODE_SUB = dict(zip("0123456789+-−=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ"))

@@ -98,7 +98,7 @@ def test_the_mathematics_of_words_is_set_in_math_mode():
     (:func:`stiefelsym.latex.math_runs`), not letter by letter in the text font: a differential (de₁, de₃/dt, dF,
     ds²), a matrix times a vector (Aeₙ), a time derivative (XᵀẎ, ė₃, Φ̇), the names of the paper's operators
     (Sym(r), pr, adj) and the named subscripts (ω_mag, TW_{n,r}); words stay text (and/or, Möbius, de Vries)."""
-    from stiefelsym.latex import tex_escape, tex_words
+    from stiefelsym.latex import tex_escape, tex_words, unicode_words
     assert tex_escape("ω = de₁ ∧ de₂ here") == r"\ensuremath{\omega  = de_{1} \wedge  de_{2}} here"
     assert tex_escape("de₃/dt = Ωe₃") == r"\mbox{\ensuremath{de_{3}/dt = \Omega e_{3}}}"
     assert tex_escape("dF onto Sym(r)") == r"\ensuremath{dF} onto \ensuremath{\mathop{\mathrm{Sym}}\nolimits (r)}"
@@ -109,6 +109,13 @@ def test_the_mathematics_of_words_is_set_in_math_mode():
         r"\ensuremath{\omega _{mag}} on \ensuremath{TW_{n,r}}, \ensuremath{\mathop{\mathrm{pr}}\nolimits _{e_{n}}(\Omega )}, "
         r"\ensuremath{ds^{2}_{\kappa }}")
     assert tex_escape("and/or Möbius de Vries") == r"and/or M\"{o}bius de Vries"
+    # a quotation of mathematics, a word after a hyphen, a script after a one-letter subscript
+    assert tex_words("reads “V_{n,n} is SO(n)” as") == (
+        r"reads ``\ensuremath{V_{n,n}} is \ensuremath{SO(n)}'' as")
+    assert tex_escape("SO(n)×SO(r)-invariant, a 2r-plane; 2r-integrals") == (
+        r"\ensuremath{SO(n)\times SO(r)}-invariant, a \ensuremath{2r}-plane; 2r-integrals")
+    assert tex_words("Σ a_i²e_i², N0_XP2") == r"\ensuremath{\Sigma  a_{i}^{2}e_{i}^{2}}, N0\_XP2"
+    assert unicode_words("Σ a_i²e_i²") == "Σ aᵢ²eᵢ²"
 
 
 def test_the_registered_words_of_a_correction_set_their_scripts():
