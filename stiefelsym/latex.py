@@ -343,7 +343,9 @@ def _tex_math_run(piece: str, scripts: dict[str, str]) -> str:
     """The LaTeX math of a math piece of running text: names upright, scripts of ASCII notation as they are
     set, the rest as :func:`tex_math` sets it."""
     piece = re.sub(r"(?<=[^\W_]|[)\]}])\*", "^{*}", piece)       # T*V, 𝒜*ₘₐₙ, λ*: a star is a superscript
-    parts = re.split(r"([A-Za-z]{2,}|[\ue000-\uf8ff])", piece.replace(NBSP, " ").replace("...", "…"))
+    # a run of letters whose last letter bears a mark (DẊ: D, X and U+0307) is not a name: tex_math sets the mark
+    parts = re.split(r"([A-Za-z]{2,}(?![A-Za-z\u0300-\u036f])|[\ue000-\uf8ff])",
+                     piece.replace(NBSP, " ").replace("...", "…"))
     return "".join(scripts[part] if part in scripts else _UPRIGHT_NAMES.get(part, part) if i % 2 else tex_math(part)
                    for i, part in enumerate(parts)).strip()
 
