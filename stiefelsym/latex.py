@@ -224,12 +224,13 @@ def _math_token(core: str, scripts: dict[str, str]) -> bool:
     """Whether a word (its outer punctuation taken off) is mathematics: made of letters, digits, math characters
     and ``()[]+-*/=<>|',`` only, every run of Latin letters one letter or an operator or group name (det, tr, SO),
     and one Latin letter alone or a math character in it ("r", "2r", "Λ₁", "TₓO", "so(r", "X = ±1")."""
-    if not core or not all(c.isascii() and (c.isalnum() or c in _MATH_ASCII or c == ".") or c == NBSP
+    if not core or not all(c.isascii() and (c.isalnum() or c in _MATH_ASCII or c in ".{}") or c in (NBSP, "…", "⋯")
                            or _math_char(c, scripts) for c in core):
         return False
     if core in _OPERATOR_TOKEN or core[0] in "<>" or core[-1] in "<>" or "<=" in core or ">=" in core:    # a lone operator, an angle bracket
         return False
-    if re.search(r"(?<!\d)\.|\.(?!\d)", core.replace("...", "…")):   # a point only in a decimal number: not e.g
+    if re.search(r"(?<!\d)\.|\.(?!\d)", core.replace("...", "…").replace("..", "…")):   # a point only in a decimal
+        # number or an ellipsis (a₁..aₙ): not e.g
         return False
     runs = re.findall(r"[A-Za-z]+", core)
     scripted = any(_math_char(c, scripts) for c in core)
@@ -251,7 +252,7 @@ def _math_token(core: str, scripts: dict[str, str]) -> bool:
 
 
 def _depth(text: str) -> int:
-    return text.count("(") + text.count("[") - text.count(")") - text.count("]")
+    return sum(text.count(c) for c in "([{") - sum(text.count(c) for c in ")]}")
 
 
 def math_runs(text: str, scripts: dict[str, str] | None = None) -> list[tuple[bool, str]]:
@@ -332,9 +333,9 @@ def math_runs(text: str, scripts: dict[str, str] | None = None) -> list[tuple[bo
 def _bracketed(piece: str) -> list[tuple[bool, str]]:
     """A math piece with the brackets that have no partner in it taken out to the text: "(A" as "(" and "A"."""
     head, tail = "", ""
-    while piece and piece[0] in "([" and _depth(piece) > 0:
+    while piece and piece[0] in "([{" and _depth(piece) > 0:
         head, piece = head + piece[0], piece[1:]
-    while piece and piece[-1] in ")]" and _depth(piece) < 0:
+    while piece and piece[-1] in ")]}" and _depth(piece) < 0:
         tail, piece = piece[-1] + tail, piece[:-1]
     return [(False, head), (True, piece), (False, tail)] if piece.strip() else [(False, head + piece + tail)]
 
@@ -342,12 +343,17 @@ def _bracketed(piece: str) -> list[tuple[bool, str]]:
 def _tex_math_run(piece: str, scripts: dict[str, str]) -> str:
     """The LaTeX math of a math piece of running text: names upright, scripts of ASCII notation as they are
     set, the rest as :func:`tex_math` sets it."""
-    piece = re.sub(r"(?<=[^\W_]|[)\]}])\*", "^{*}", piece)       # T*V, 𝒜*ₘₐₙ, λ*: a star is a superscript
+    piece = re.sub(r"(?<=[^\W_]|[)\]}])\*", "\x05", piece)       # T*V, 𝒜*ₘₐₙ, λ*: a star is a superscript
     # a run of letters whose last letter bears a mark (DẊ: D, X and U+0307) is not a name: tex_math sets the mark
     parts = re.split(r"([A-Za-z]{2,}(?![A-Za-z\u0300-\u036f])|[\ue000-\uf8ff])",
                      piece.replace(NBSP, " ").replace("...", "…"))
-    return "".join(scripts[part] if part in scripts else _UPRIGHT_NAMES.get(part, part) if i % 2 else tex_math(part)
-                   for i, part in enumerate(parts)).strip()
+    return "".join(scripts[part] if part in scripts else _UPRIGHT_NAMES.get(part, part) if i % 2 else _braced(part)
+                   for i, part in enumerate(parts)).strip().replace("\x05", "^{*}")
+
+
+def _braced(part: str) -> str:
+    """:func:`tex_math` of words whose braces are braces ({F_i, F_j}, span{e, p}: a bracket or a set), not groups."""
+    return tex_math(part.replace("{", "\x02").replace("}", "\x03")).replace("\x02", r"\{").replace("\x03", r"\}")
 
 
 def _tex_escape_chars(text: str, scripts: dict[str, str] | None = None) -> str:

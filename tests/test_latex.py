@@ -20,7 +20,7 @@ STATEMENTS = {
 
 @pytest.mark.parametrize("raw, tex", [
     ("a_b", r"a\_b"), ("#1", r"\#1"), ("50%", r"50\%"), ("A&B", r"A\&B"), ("~", r"\~{}"),
-    ("x^2", r"x\^{}2"), ("{b}", r"\{b\}"), ("\\foo", r"\textbackslash{}foo"), ("$5", r"\$5"),
+    ("x^2", r"x\^{}2"), ("{b}", r"\ensuremath{\{b\}}"), ("\\foo", r"\textbackslash{}foo"), ("$5", r"\$5"),
     ("a<b", r"\ensuremath{a<b}"), ("Φ", r"\ensuremath{\Phi}"), ("XXᵀ", r"\ensuremath{XX^{T}}"),
     ("≤ ½", r"\ensuremath{\le} \ensuremath{\tfrac12}"), ("Jovanović", r"Jovanovi\'{c}"),
     ("Božidar", r"Bo\v{z}idar"), ("𝔄", r"\ensuremath{\mathfrak{A}}"), ("ℝ", r"\ensuremath{\mathbb{R}}"),
@@ -117,6 +117,11 @@ def test_the_mathematics_of_words_is_set_in_math_mode():
         r"\ensuremath{SO(n)\times SO(r)}-invariant, a \ensuremath{2r}-plane; 2r-integrals")
     assert tex_words("Σ a_i²e_i², N0_XP2") == r"\ensuremath{\Sigma  a_{i}^{2}e_{i}^{2}}, N0\_XP2"
     assert unicode_words("Σ a_i²e_i²") == "Σ aᵢ²eᵢ²"
+    # braces that are brackets or sets, and an ellipsis inside a formula
+    assert tex_words("span{e, Aė} and {F_i, F_j}_ε") == (
+        r"\ensuremath{\mathop{\mathrm{span}}\nolimits \{e, A\dot{e}\}} and \ensuremath{\{F_{i}, F_{j}\}_{\varepsilon }}")
+    assert tex_escape("e₁∧…∧eᵣ at a₁..aₙ, e.g. here") == (
+        r"\ensuremath{e_{1}\wedge \dots \wedge e_{r}} at \ensuremath{a_{1}..a_{n}}, e.g. here")
 
 
 def test_the_registered_words_of_a_correction_set_their_scripts():
@@ -140,7 +145,7 @@ def test_a_power_in_parentheses_and_the_powers_in_a_check_name_are_scripts():
     assert "\\^{}" not in tex
     assert unicode_words("(μ I_n - A)^(-1)") == "(μ Iₙ - A)⁻¹"
     title = entry_title("{1/2<mu, AA mu>, tr(mu + lambda A)^3} (+)")
-    assert r"\ensuremath{^{3}}" in title and "\\^{}" not in title
+    assert r"(\mu  + \lambda  A)^{3}}" in title and "\\^{}" not in title
     assert "\\^{}" in tex_words("g^(ab)")
     assert unicode_words("d^2X/dt^2, d^2(X^T P)") == "d²X/dt², d²(Xᵀ P)"     # Leibniz's second derivative
     assert "\\^{}" not in entry_title("d^2X/dt^2 - F")
