@@ -236,19 +236,20 @@ def _math_token(core: str, scripts: dict[str, str]) -> bool:
     scripted = any(_math_char(c, scripts) for c in core)
     # a product of matrices written together (PXᵀ, XXᵀ) is a run of capitals, a matrix times a vector or a scalar
     # times a matrix (Aeₙ, wIₙ, fE₁) or a differential (de₁, ds²) two letters: mathematics where a math character
-    # says so (UNEXPECTED, LA1, of are words and names); a differential of a capital (dF, dX) is mathematics
-    # anywhere, and one of a small letter in a quotient of differentials (de₃/dt, d(XᵀX)/dt)
+    # says so (UNEXPECTED, LA1, of are words and names); a small letter and a capital (a differential dF, a scalar
+    # times a matrix wI: no word is written so) are mathematics anywhere, and a differential of a small letter in a
+    # quotient of differentials (de₃/dt, d(XᵀX)/dt)
     quotient = "/" in core
 
     def letters(w: str) -> bool:
-        return (len(w) == 1 or w in _UPRIGHT_NAMES or bool(re.fullmatch(r"d[A-Z]", w))
+        return (len(w) == 1 or w in _UPRIGHT_NAMES or bool(re.fullmatch(r"[a-z][A-Z]", w))
                 or scripted and (w.isupper() and len(w) <= 4 or len(w) == 2)
                 or quotient and bool(re.fullmatch(r"d[a-z]", w)))
     if not all(letters(w) for w in runs):
         return False
     if re.fullmatch(r"\d+(?:\.\d+)?e[-+]?\d+", core):     # a number in E notation
         return False
-    return any(len(w) == 1 or re.fullmatch(r"d[A-Za-z]", w) for w in runs) or scripted
+    return any(len(w) == 1 or re.fullmatch(r"d[A-Za-z]|[a-z][A-Z]", w) for w in runs) or scripted
 
 
 def _depth(text: str) -> int:
@@ -811,10 +812,10 @@ _MATH_IDIOMS = (
 
 #: the dual Lax matrices of the paper, 𝓛*_neum, 𝓐*_man, ... written L*_neum, A*_man
 _DUAL_LAX = re.compile(r"(?<![A-Za-z])([LA])\*_(?=neum|man)")
-#: subscripts the PDF sets as one (the Markdown keeps them as written): the paper's named ones (H_neum, 𝓛*_man, ω_mag) with a
+#: subscripts the PDF sets as one (the Markdown keeps them as written): the paper's named ones (H_neum, 𝓛*_man, ω_mag, H_CPB) with a
 #: second index as the paper writes them (H_neum,κ as H_{neum,κ}; H_neum_0 and H_neum₀ as H_{neum_0}), a Lie algebra's
 #: (eta_so(r)) and two indices (Psi_ij)
-_TEX_SUBSCRIPTS = (re.compile(r"(?<=[^\W_]|\)|\*)_((?:neum|man|mag)(?:,[^\s,;:.()]+|_[^\W_]+|[₀-₉]+)?)(?![^\W_])"),
+_TEX_SUBSCRIPTS = (re.compile(r"(?<=[^\W_]|\)|\*)_((?:neum|man|mag|CPB|CP)(?:,[^\s,;:.()]+|_[^\W_]+|[₀-₉]+)?)(?![^\W_])"),
                    re.compile(r"(?<=[^\W_]|\))_((?:so|sp|gl|u)\([^()\s]*\))"),
                    re.compile(r"(?<=[^\W_]|\))_([ijklabpq][ijklabpq])\b"))
 
