@@ -234,8 +234,9 @@ def _math_token(core: str, scripts: dict[str, str]) -> bool:
         return False
     runs = re.findall(r"[A-Za-z]+", core)
     scripted = any(_math_char(c, scripts) for c in core)
-    # a product of matrices written together (PXᵀ, XXᵀ) is a run of capitals, a matrix times a vector or a scalar
-    # times a matrix (Aeₙ, wIₙ, fE₁) or a differential (de₁, ds²) two letters: mathematics where a math character
+    # a product of matrices written together (PXᵀ, XXᵀ, gXhᵀ), a matrix times a vector or a scalar times a matrix
+    # (Aeₙ, wIₙ, fE₁) or a differential (de₁, ds²): two letters, or up to 4 with no two small letters together
+    # (every word but a, I has two): mathematics where a math character
     # says so (UNEXPECTED, LA1, of are words and names); a small letter and a capital (a differential dF, a scalar
     # times a matrix wI: no word is written so) are mathematics anywhere, and a differential of a small letter in a
     # quotient of differentials (de₃/dt, d(XᵀX)/dt)
@@ -243,7 +244,7 @@ def _math_token(core: str, scripts: dict[str, str]) -> bool:
 
     def letters(w: str) -> bool:
         return (len(w) == 1 or w in _UPRIGHT_NAMES or bool(re.fullmatch(r"[a-z][A-Z]", w))
-                or scripted and (w.isupper() and len(w) <= 4 or len(w) == 2)
+                or scripted and (len(w) == 2 or len(w) <= 4 and not re.search(r"[a-z]{2}", w))
                 or quotient and bool(re.fullmatch(r"d[a-z]", w)))
     if not all(letters(w) for w in runs):
         return False

@@ -107,6 +107,8 @@ def test_the_mathematics_of_words_is_set_in_math_mode():
     assert tex_escape("ė₃ and Φ̇") == r"\ensuremath{\dot{e}_{3}} and \ensuremath{\dot{\Phi}}"
     assert tex_escape("DẊᵀDY") == r"\ensuremath{D\dot{X}^{T}DY}"     # the mark on the last of two letters
     assert tex_escape("|L − wI| = 0") == r"\mbox{\ensuremath{|L - wI| = 0}}"
+    assert tex_escape("under (gXhᵀ, gPhᵀ, gAgᵀ), g in") == (
+        r"under \ensuremath{(gXh^{T}, gPh^{T}, gAg^{T})}, \ensuremath{g} in")
     assert tex_words("H_CPB and H_CP, not LaTeX") == r"\ensuremath{H_{CPB}} and \ensuremath{H_{CP}}, not LaTeX"
     assert tex_words("ω_mag on TW_{n,r}, pr_{e_n}(Ω), ds²_κ") == (
         r"\ensuremath{\omega _{mag}} on \ensuremath{TW_{n,r}}, \ensuremath{\mathop{\mathrm{pr}}\nolimits _{e_{n}}(\Omega )}, "
