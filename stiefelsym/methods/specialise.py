@@ -140,25 +140,35 @@ def _proved_digests(claim: Claim, func: Callable, digest: str | None = None) -> 
     return tuple(out)
 
 
+def _keepable(claim: Claim, func: Callable | None) -> tuple[Callable, tuple] | None:
+    """(the function run, what the run reads of the claim: :func:`_claim_state`) where a dimension-free result of
+    the claim may be kept in this process, else None: not under mutation analysis or a loan, only for a claim
+    expected to hold in a realization the free algebra has, and only where its statement of sizes can be read."""
+    if fixed_size._MUTATION_ANALYSIS or fixed_size._LOAN is not None or claim.expect != "holds" \
+            or claim.realization not in REALIZATIONS:
+        return None
+    func = func or claim.func
+    try:
+        stated = size_families(claim)
+    except Exception:   # noqa: BLE001 - a statement of sizes that cannot be read: nothing to keep
+        return None
+    return func, _claim_state(claim, (tuple(stated[0]), stated[1]))
+
+
 def remember(claim: Claim, func: Callable | None, res: Result) -> None:
     """Keep the result of the dimension-free run of a claim's function that a plan made in this process (its
     run with no size, :func:`run_free`), as the attempt of :func:`_free_result` would have made it: the same
     computation, so a run at a size of the same claim in this process (auto from n = 5 on, exact beyond the
     symbolic budget) takes it instead of forking the attempt again.  A copy is kept (the caller's record is
     finished in place), with the seconds it took: a request with a shorter time limit makes its own attempt."""
-    if fixed_size._MUTATION_ANALYSIS or fixed_size._LOAN is not None or claim.expect != "holds" \
-            or claim.realization not in REALIZATIONS:
+    kept = _keepable(claim, func)
+    if kept is None:
         return
     import pickle
-    func = func or claim.func
-    try:
-        stated = size_families(claim)
-    except Exception:   # noqa: BLE001 - a statement of sizes that cannot be read: nothing to keep
-        return
+    func, state = kept
     digests = _proved_digests(claim, func)
     if not digests:
         return
-    state = _claim_state(claim, (tuple(stated[0]), stated[1]))
     copy = pickle.loads(pickle.dumps(res, protocol=pickle.HIGHEST_PROTOCOL))
     _keep((claim.id, id(func), None), (claim, func, state, digests, copy, claim.sizes, None, res.seconds, True))
 
@@ -182,15 +192,10 @@ def adopt(claim: Claim, func: Callable | None, entries: list[tuple]) -> None:
     would have kept them: the same computations, so a run at a size of the claim here takes them instead of
     forking the attempts again.  A result is not adopted where this process keeps its own, or where the claim
     here is not the one it was computed for (what the run reads of it differs)."""
-    if fixed_size._MUTATION_ANALYSIS or fixed_size._LOAN is not None or claim.expect != "holds" \
-            or claim.realization not in REALIZATIONS:
+    kept = _keepable(claim, func)
+    if kept is None:
         return
-    func = func or claim.func
-    try:
-        stated = size_families(claim)
-    except Exception:   # noqa: BLE001 - a statement of sizes that cannot be read: nothing to keep
-        return
-    here = _claim_state(claim, (tuple(stated[0]), stated[1]))
+    func, here = kept
     for family, state, digests, res, took in entries:
         key = (claim.id, id(func), family)
         hit = _FREE.get(key)
