@@ -1132,6 +1132,12 @@ def _unconstrained_chart(claim: Claim, n: int, r: int, func: Callable, graph: An
     return (scene, UNCONSTRAINED_REDUCTION.format(where=where) + scene.second_point_text()), ev
 
 
+def _reads_rn(graph: Any) -> bool:
+    """Whether the graph reads coordinates of ℝⁿ (an index in ℝⁿ, or one not known): what the O(n) chart's record
+    watches (see :func:`call_claim`)."""
+    return any(inv & {"?", "n"} for inv in coordinate_reads(graph).values())
+
+
 def _equivariant_chart_unused(claim: Claim, n: int, r: int, func: Callable, graph: Any, unitary: bool) -> bool:
     """Whether the equivariant chart of the standard realization (O(n) alone) is certain not to decide the graph:
     the graph reads coordinates of ℝⁿ that :func:`call_claim` records before any evaluation, and no reviewed
@@ -1144,7 +1150,7 @@ def _equivariant_chart_unused(claim: Claim, n: int, r: int, func: Callable, grap
         return False
     if claim.reviewed and claim.equivariance and _reviewed_function(claim, func):
         return False
-    return any(inv & {"?", "n"} for inv in coordinate_reads(graph).values())
+    return _reads_rn(graph)
 
 
 def _reads_coordinates(claim: Claim, n: int, r: int, func: Callable, graph: Any = None) -> list[str]:
@@ -1567,20 +1573,18 @@ def _check_groups(claim: Claim, n: int, r: int, func: Callable) -> tuple[list[st
     if claim.expect == "nonzero" or claim.realization != "standard":
         return None
 
-    def reads_rn(g: Any) -> bool:       # what the O(n) chart's record watches (see call_claim)
-        return any(inv & {"?", "n"} for inv in coordinate_reads(g).values())
     try:
         cons = REALIZATIONS[claim.realization]
         graph = _claim_graph(func, n, r, (cons.name, cons.build))
         names = graph.output_keys()
-        if names is None or len(names) < 2 or not reads_rn(graph):
+        if names is None or len(names) < 2 or not _reads_rn(graph):
             return None
         if claim.reviewed and claim.equivariance and _reviewed_function(claim, func):
             return None
         free = graph.cache.get("checks_reading_no_rn")     # (a pass over the graph: kept with it)
         if free is None:
             free = graph.cache["checks_reading_no_rn"] = frozenset(
-                k for k in names if not reads_rn(graph.checks_slice(frozenset((k,)))))
+                k for k in names if not _reads_rn(graph.checks_slice(frozenset((k,)))))
     except Expired:
         raise
     except Exception:       # noqa: BLE001 - the claim's graph is refused: the whole run reports it
