@@ -102,8 +102,8 @@ def test_every_unlabelled_statement_a_claim_checks_is_named_by_it():
     """The paper's statements without a label are numbered by its \\newtheorem counters (Theorem, Proposition, Lemma
     and Corollary share one per section, a Remark has its own; the appendices are sections 9 and 10): Remarks 3.1,
     4.1, 4.2, 8.1 and 8.2, Corollary 8.7, Theorems 4.3, 9.2 and 9.5, Proposition 4.6.  Each that a claim checks is
-    named by that claim; Remark 3.1 (at r = n, (5) §3 is the right-invariant geodesic flow on SO(n)) is checked by no
-    claim of the catalog."""
+    named by that claim (Remark 3.1, at r = n (5) §3 is the right-invariant geodesic flow on SO(n), by
+    right-invariant-geodesic-flow)."""
     unlabelled = paperref.unlabelled_statements(PAPER.read_text(encoding="utf-8"))
     bare = {k for k, v in unlabelled.items() if not v}
     assert bare == {"Remark 3.1", "Remark 4.1", "Theorem 4.3", "Remark 4.2", "Proposition 4.6", "Remark 8.1",
@@ -113,6 +113,7 @@ def test_every_unlabelled_statement_a_claim_checks_is_named_by_it():
         for name in c.unlabelled:
             naming.setdefault(name, set()).add(c.id)
     assert naming == {
+        "Remark 3.1": {"right-invariant-geodesic-flow"},
         "Remark 4.1": {"manakov-integrals", "noether-normal-metric"},
         "Theorem 4.3": {"manakov-lax"},
         "Remark 4.2": {"gram-not-in-involution-with-psi"},

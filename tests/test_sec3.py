@@ -2,7 +2,7 @@
 import pytest
 
 from stiefelsym.proofs import sec3_geodesic_flows as g
-from stiefelsym import Rank, admissible
+from stiefelsym import Rank, admissible, comm
 from stiefelsym.claims import Claim, load_catalog
 from stiefelsym.methods.dimension_free import run_free
 from stiefelsym.methods.fixed_size import run_exact, run_points
@@ -38,6 +38,13 @@ def submersion_flow_transposed(s):
     AA = s.sym_operator("AA")
     flow = s.dirac_flow(g.H_submersion)
     return {"dX/dt": flow.Xdot - s.X @ AA(s.Phi)[: s.r, : s.r] if s.r == s.n else flow.Xdot + AA(s.Phi) @ s.X}
+
+
+def right_invariant_euler_sign(s):
+    """The Euler–Arnold equation with the sign of a left-invariant metric's (the body frame), Φ̇ = −[𝔸(Φ), Φ]."""
+    AA = s.sym_operator("AA")
+    flow = s.dirac_flow(g.H_submersion)
+    return {"dPhi/dt = [AA(Phi), Phi]": s.d(lambda t: t.Phi, flow) + comm(AA(s.Phi), s.Phi)}
 
 
 def normal_hamiltonian_half(s):
@@ -105,6 +112,7 @@ CASES = [
     ("euclidean-invariance", euclidean_invariance_wrong_flow, (3, 2)),
     ("submersion-hamiltonian", submersion_trace_sign, (3, 2)),
     ("submersion-flow", submersion_flow_transposed, (3, 2)),
+    ("right-invariant-geodesic-flow", right_invariant_euler_sign, (3, 3)),   # so(2) is abelian: n >= 3
     ("normal-hamiltonian", normal_hamiltonian_half, (3, 2)),
     ("normal-flow", normal_flow_order, (3, 2)),
     ("normal-legendre-inverse", legendre_factor, (3, 2)),
@@ -138,8 +146,9 @@ def test_corrupted_claim_fails(cid, func, size):
 @pytest.mark.parametrize("cid", sorted({c[0] for c in CASES}))
 def test_claim_holds_as_printed_at_a_small_size(cid):
     c = load_catalog().get(cid)
-    n, r = (2, 1) if cid == "metric-flow" else (3, 2)   # metric-flow: symbolic budget
+    # metric-flow: symbolic budget; right-invariant-geodesic-flow: stated at r = n
+    n, r = {"metric-flow": (2, 1), "right-invariant-geodesic-flow": (3, 3)}.get(cid, (3, 2))
     assert run_exact(c, n, r, 0).verdict == "proved"
-    res = run_points(c, 3, 2, "modular", 0)
+    res = run_points(c, 3, r if cid == "right-invariant-geodesic-flow" else 2, "modular", 0)
     # checks that no parameter enters (counts of integers) are constants, exact over Q: proved
     assert res.verdict == ("proved" if res.certificate.startswith("no parameter enters") else "checked"), res.message
