@@ -566,7 +566,7 @@ def pr_e(xi, e):
                  r"F_\Omega=\pr_{e_n^\perp}(\Omega)=\Omega-\Phi(e_n,\dot e_n),\quad "
                  r"\pr_{e_n}(\Omega)=\dot e_n\wedge e_n=\Phi(e_n,\dot e_n)")
 def ym_second_derivative(s):
-    """Proposition YM (ii): along the flow of H_CP, the second derivative of e_n is (mag6) with the Yang–Mills term F_Ωė_n, F_Ω = pr_{e_n⊥}(Ω) = Ω − ė_n∧e_n, an equation that keeps TS^{n−1}; (mag3) pr_{e_n}(Ω) = ė_n∧e_n, pr_{e_n} is the orthogonal projection of (OD) (idempotent, ⟨pr_{e_n}ξ, pr_{e_n⊥}ζ⟩ = 0, pr_{e_n⊥}ξ annihilates e_n), ė_n = pr_{e_n}(Ω)e_n, and the steps of the proof hold."""
+    """Proposition YM (ii): along the flow of H_CP, the second derivative of e_n is (mag6) with the Yang–Mills term F_{Ω}ė_n, F_Ω = pr_{e_n⊥}(Ω) = Ω − ė_n∧e_n, an equation that keeps TS^{n−1}; (mag3) pr_{e_n}(Ω) = ė_n∧e_n, pr_{e_n} is the orthogonal projection of (OD) (idempotent, ⟨pr_{e_n}ξ, pr_{e_n⊥}ζ⟩ = 0, pr_{e_n⊥}ξ annihilates e_n), ė_n = pr_{e_n}(Ω)e_n, and the steps of the proof hold."""
     flow = s.dirac_flow(H_CP)
     e = last(s)
     Omega = s.Phi
@@ -654,7 +654,7 @@ def monopole_checks(s, sign):
        statement=r"n=3,\ \eta=\varepsilon E_1\wedge E_2:\quad \ddot e_3=Ae_3-\big((e_3,Ae_3)+(\dot e_3,\dot e_3)\big)e_3"
                  r"+\varepsilon\,e_3\times\dot e_3,\quad F_\Omega\dot e_3=\varepsilon\,e_3\times\dot e_3")
 def monopole_form(s):
-    """The n = 3 case of Proposition YM: for the normal Neumann flow on V_{3,2} with Ψ = εE₁∧E₂, under so(3) ≅ (ℝ³, ×) and e₃ = e₁ × e₂, the Yang–Mills term of (mag6) is the Lorentz force of a magnetic monopole, F_Ωė₃ = εe₃ × ė₃, so that (mag6), checked here at n = 3, becomes the printed monopole equation."""
+    """The n = 3 case of Proposition YM: for the normal Neumann flow on V_{3,2} with Ψ = εE₁∧E₂, under so(3) ≅ (ℝ³, ×) and e₃ = e₁ × e₂, the Yang–Mills term of (mag6) is the Lorentz force of a magnetic monopole, F_{Ω}ė₃ = εe₃ × ė₃, so that (mag6), checked here at n = 3, becomes the printed monopole equation."""
     flow, e3, e3dot, F, eps, e3dd = monopole_terms(s)
     checks = monopole_identities(s, flow, e3, e3dot, F, eps, e3dd)
     checks["F_Ω ė₃ − ε e₃ × ė₃"] = F @ e3dot - eps * cross(s, e3, e3dot)
@@ -777,7 +777,7 @@ def cpb_reduction_checks(s, block):
        statement=r"\eta_{so(r)}=0:\ \text{the reduction of (10), (7) of Section 9 is the Neumann system with the normal "
                  r"metric on }V_{n,r}")
 def cpb_reduces_to_the_normal_neumann_system(s):
-    """The symmetric CPB body reduced with η_so(r) = 0 is, as the paper says, the Neumann system with the normal metric on V_{n,r}: at a point of T*SO(n) where the so(r) block of the body momentum vanishes, the first r columns and P_r = MX_r − ½X_rX_rᵀMX_r (the covector with Φ = M when Ψ_so(n−r) = 0) move by (N0_XP2), for every r ≤ n − 2."""
+    """The symmetric CPB body reduced with η_so(r) = 0 is, as the paper says, the Neumann system with the normal metric on V_{n,r}: at a point of T*SO(n) where the so(r) block of the body momentum vanishes, the first r columns and P_r = MX_r − ½XᵣXᵣᵀMX_r (the covector with Φ = M when Ψ_so(n−r) = 0) move by (N0_XP2), for every r ≤ n − 2."""
     return cpb_reduction_checks(s, "so(r)")
 
 

@@ -674,7 +674,7 @@ def complex_neumann_momentum_algebra_corrected(s):
        statement=r"\tfrac{d}{dt}\psi_0=0,\ \psi_0=Z^T\dot{\bar Z}-\dot Z^T\bar Z;\quad \tfrac{d}{dt}\psi_j=0,\ "
                  r"\psi_j=\sum_{i=1}^r\dot z_i^j\bar z_i^j-z_i^j\dot{\bar z}_i^j\ \text{along (W-eq)}")
 def complex_neumann_momenta(s):
-    """The momentum ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ of the right U(r)-action and the momenta ψ_j of the left U(1)ⁿ-action (u(1)) (A diagonal) are conserved along (W-eq).  ψ_j = tr(E_j(ŻZ̄ᵀ − ZŻ̄ᵀ)), E_j = E_jE_jᵀ = (I − S_j)/2 with S_j the reflection of the j-th coordinate hyperplane: checked for j = 1 at fixed sizes (every j is 1 up to a relabelling of the coordinates) and, dimension-free, for E = (I − S) with every orthogonal symmetry S that commutes with A (every j, and every sum of the ψ_j, at once)."""
+    """The momentum ψ₀ = ZᵀŻ̄ − ŻᵀZ̄ of the right U(r)-action and the momenta ψ_j of the left U(1)ⁿ-action (u(1)) (A diagonal) are conserved along (W-eq).  ψ_j = tr(E_j(ŻZ̄ᵀ − ZŻ̄ᵀ)), E_j = EⱼEⱼᵀ = (I − S_j)/2 with S_j the reflection of the j-th coordinate hyperplane: checked for j = 1 at fixed sizes (every j is 1 up to a relabelling of the coordinates) and, dimension-free, for E = (I − S) with every orthogonal symmetry S that commutes with A (every j, and every sum of the ψ_j, at once)."""
     z = complex_point(s)
     flow = flow_complex(s, z)
     psi0 = lambda t, w: ctranspose(t, w["Z"]) @ t.conj(w["Zdot"]) - ctranspose(t, w["Zdot"]) @ t.conj(w["Z"])

@@ -450,7 +450,7 @@ def generic_adjoint_orbit_is_regular_iff_corrected(s):
                  r"-\langle\xi,[\nabla\tr\xi_{(m)}^{2k},\nabla\tr\xi_{(m')}^{2k'}]\rangle=0,\quad "
                  r"\xi\in\mathfrak v,\ n-r<m,m'\le n")
 def chain_algebra_commutes(s):
-    """The generators tr ξ_(m)^{2k} (n − r < m ≤ n) of 𝔄 = 𝔄₁ + … + 𝔄_r pairwise commute for {f, g}_𝔳(ξ) = −<ξ, [∇f, ∇g]> at a generic ξ ∈ 𝔳 (gradients taken on so(n))."""
+    """The generators tr ξ_{(m)}^{2k} (n − r < m ≤ n) of 𝔄 = 𝔄₁ + … + 𝔄_r pairwise commute for {f, g}_𝔳(ξ) = −<ξ, [∇f, ∇g]> at a generic ξ ∈ 𝔳 (gradients taken on so(n))."""
     n, r = s.n, s.r
     xi = s.xi - lower_block(s, n - r) @ s.xi @ lower_block(s, n - r)   # zero lower-right block: ξ ∈ 𝔳
     gens = chain_generators(n, r)

@@ -225,7 +225,7 @@ def theta2_semidirect_bracket(s, a, b, mu_, Y):
                  r"\{\Phi_\xi,\Phi_\zeta\}=\langle\Phi,[\xi,\zeta]\rangle,\ \{\Phi_\xi,\tr(U^TX)\}=-\tr(U^T\xi X),\ "
                  r"\{\tr(U^TX),\tr(V^TX)\}=0;\ \Theta_2\ \text{Poisson into}\ (so(n)\oplus_{\ad}Sym(n))^*")
 def theta_is_a_composition_of_poisson_maps(s):
-    """Θ = Θ₂∘Θ₁: Θ₁ = Φ + X satisfies the Lie–Poisson relations of the semi-direct product so(n) ⊕_ρ M_{n,r} for the Dirac bracket ({Φ_ξ, Φ_ζ} = Φ_[ξ,ζ], {Φ_ξ, tr(UᵀX)} = −tr(UᵀξX), {tr(UᵀX), tr(VᵀX)} = 0), and Θ₂(μ, Y) = μ + YYᵀ maps that bracket to Λ₁ (at a generic (μ, Y), with generic covectors a, b of gl(n))."""
+    """Θ = Θ₂∘Θ₁: Θ₁ = Φ + X satisfies the Lie–Poisson relations of the semi-direct product so(n) ⊕_ρ M_{n,r} for the Dirac bracket ({Φ_ξ, Φ_ζ} = Φ_{[ξ,ζ]}, {Φ_ξ, tr(UᵀX)} = −tr(UᵀξX), {tr(UᵀX), tr(VᵀX)} = 0), and Θ₂(μ, Y) = μ + YYᵀ maps that bracket to Λ₁ (at a generic (μ, Y), with generic covectors a, b of gl(n))."""
     U, V = s.generic("U", "n", "r"), s.generic("V", "n", "r")
     zeta = s.zeta
     a, b = gl_generic(s, "a"), gl_generic(s, "b")
@@ -255,7 +255,7 @@ def J(t, k):
                  r"\{J_k,\Psi_\eta\}=\{\langle\Theta,a\rangle,\Psi_\eta\}=\{J_k,H_{neum,\kappa}\}=0,\quad J_k=\tr\Psi^{2k},\ "
                  r"k=1,2,3\ (\text{the paper: }k\le[r/2])")
 def psi_powers_are_casimirs_of_the_reduced_bracket(s):
-    """The Hamiltonian vector field of J_k = tr(Ψ^{2k}) (k = 1, 2, 3, as the trace functions of this section; the paper takes k ≤ [r/2], the independent ones: for r ≤ 7 they are among these, and for k > [r/2] J_k is a function of them, so the identities hold all the same; for r ≥ 8 the paper's J_4, …, J_[r/2] are not checked here) is the infinitesimal right action of ω = −4kΨ^{2k−1} ∈ so(r), tangent to the SO(r)-orbits, so J_k commutes with every SO(r)-invariant function (j_k is a Casimir of the reduced bracket {,}′), in particular with the components of Θ, and is an integral of the Neumann flows (No); and the functions (torus) commute with Ψ."""
+    """The Hamiltonian vector field of J_k = tr(Ψ^{2k}) (k = 1, 2, 3, as the trace functions of this section; the paper takes k ≤ [r/2], the independent ones: for r ≤ 7 they are among these, and for k > [r/2] J_k is a function of them, so the identities hold all the same; for r ≥ 8 the paper's J_4, …, J_{[r/2]} are not checked here) is the infinitesimal right action of ω = −4kΨ^{2k−1} ∈ so(r), tangent to the SO(r)-orbits, so J_k commutes with every SO(r)-invariant function (j_k is a Casimir of the reduced bracket {,}′), in particular with the components of Θ, and is an integral of the Neumann flows (No); and the functions (torus) commute with Ψ."""
     Theta_a = lambda t: t.killing(Theta(t), gl_generic(t, "a"))   # noqa: E731
     checks = {"{<Theta, a>, Psi_eta}": s.bracket(Theta_a, Psi_eta)}
     for k in POWERS:

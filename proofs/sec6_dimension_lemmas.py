@@ -674,7 +674,7 @@ def casimir_gradient_rows(s, x, A):
        sizes=admissible(5), exact_max_n=4, exact_max_r={5: 2}, equivariance=EQUIVARIANCE_XA,
        statement=r"\rank\{d f|_{T_x\mathcal O}: f\in\mathcal F\}=l=\tfrac12\dim\mathcal O,\quad x=\Theta(X,P)\ \text{generic}")
 def casimirs_complete_on_leaf(s):
-    """Lemma LEMA2: among the functions (central) there are l = ½(dimension) independent on a generic symplectic leaf 𝒪 ⊂ Θ(T*V) (the rank of df restricted to T_x𝒪 = Λ1(x)(gl(n)))."""
+    """Lemma LEMA2: among the functions (central) there are l = ½(dimension) independent on a generic symplectic leaf 𝒪 ⊂ Θ(T*V) (the rank of df restricted to Tₓ𝒪 = Λ1(x)(gl(n)))."""
     n, r = s.n, s.r
     x = theta(s)
     rows = casimir_gradient_rows(s, x, s.A)

@@ -628,7 +628,7 @@ def line_tangency(s, mu):
        statement=r"r=1:\ \{F_i,F_j\}=0,\ \ \mathrm{disc}_{l(t)}Q(\lambda)=-\sum_i\frac{F_i}{\lambda-a_i}"
                  r"=-\mathcal I_2(\lambda)/a(\lambda),\ \ \mathrm{disc}_{l(t)}Q(0)=\sum_iF_i/a_i")
 def moser_chasles_for_the_neumann_system(s):
-    """Proposition Mum_geod (r = 1): the functions F_i Poisson-commute, so every Hamiltonian Σ α_iF_i conserves them all; the line l = p + span{e} is tangent to the confocal quadric Q(λ) iff Σ_i F_i/(λ − a_i) = 𝓘_2(λ)/a(λ) vanishes, a polynomial condition of degree n − 1 with fixed roots (i); and it is tangent to Q(0) iff H = Σ_i F_i/a_i = 0, the contact point being x = p − (⟨A⁻¹e, p⟩/⟨A⁻¹e, e⟩)e, which lies on Q(0) exactly when H = 0 (ii; that x(t) is a geodesic of Q(0) is not checked here: it holds on the level set H = 0 only)."""
+    """Proposition Mum_geod (r = 1): the functions F_i Poisson-commute, so every Hamiltonian Σ αᵢFᵢ conserves them all; the line l = p + span{e} is tangent to the confocal quadric Q(λ) iff Σ_i F_i/(λ − a_i) = 𝓘_2(λ)/a(λ) vanishes, a polynomial condition of degree n − 1 with fixed roots (i); and it is tangent to Q(0) iff H = Σ_i F_i/a_i = 0, the contact point being x = p − (⟨A⁻¹e, p⟩/⟨A⁻¹e, e⟩)e, which lies on Q(0) exactly when H = 0 (ii; that x(t) is a geodesic of Q(0) is not checked here: it holds on the level set H = 0 only)."""
     n = s.n
     F = uhlenbeck_integrals(s)
     lam, a = s.lam, s.a
@@ -713,7 +713,7 @@ def line_pair_tangency(t):
                  r"\mathrm{span}\{e,A\dot e\},\ \ \tfrac{d}{dt}\det(U^TR_\lambda U)=0,\ "
                  r"\det(U^TR_\lambda U)=(e,R_\lambda e)(p,R_\lambda p)-(e,R_\lambda p)^2")
 def poisson_sphere_planes(s):
-    """The corollary of Theorem Chasles-Manakov: along a geodesic of the Poisson-sphere metric (sp1), Aė = (A⁻¹e, e)p − (A⁻¹e, p)e, so the 2-plane span{e, p} is span{e, Aė}, and its tangency polynomial det(UᵀR_λU), U = (e, p), the Gram determinant (e, R_λe)(p, R_λp) − (e, R_λp)², is conserved (tangent to n − 2 fixed cones of Q_0(λ))."""
+    """The corollary of Theorem Chasles-Manakov: along a geodesic of the Poisson-sphere metric (sp1), Aė = (A⁻¹e, e)p − (A⁻¹e, p)e, so the 2-plane span{e, p} is span{e, Aė}, and its tangency polynomial det(UᵀR_{λ}U), U = (e, p), the Gram determinant (e, R_{λ}e)(p, R_{λ}p) − (e, R_{λ}p)², is conserved (tangent to n − 2 fixed cones of Q_0(λ))."""
     flow = s.dirac_flow(H_poisson_sphere)
     e, p, Ai = s.X, s.P, s.Ainv
     k = e.T @ Ai @ e
