@@ -160,3 +160,36 @@ def test_a_label_in_an_unnumbered_row_is_named_by_its_displays_number():
     assert len(rows) == 3 and "\\label{pair}" not in rows[0] and rows[1].endswith("\\label{pair}")
     assert paperref._labels_on_numbered_rows(tex.replace("\\notag", "")) == tex.replace("\\notag", "")
     assert paperref.table()["so(n,n)"]["number"] == "9" and paperref.table()["LA3*C"]["number"] == "10"
+
+
+def _without_typewriter(tex: str) -> str:
+    """LaTeX with every \\texttt{...} group taken out (code and labels set in typewriter type)."""
+    out, i = [], 0
+    while i < len(tex):
+        if tex.startswith(r"\texttt{", i):
+            i, depth = i + len(r"\texttt{"), 1
+            while i < len(tex) and depth:
+                depth += {"{": 1, "}": -1}.get(tex[i], 0) if tex[i - 1] != "\\" else 0
+                i += 1
+            out.append(" ")
+        else:
+            out.append(tex[i])
+            i += 1
+    return "".join(out)
+
+
+@pytest.mark.skipif(not PAPER.exists(), reason="the paper is not next to the repository")
+def test_no_title_leaves_a_script_in_the_text_font(catalog):
+    """A title's scripts are set in math (tex_words): an underscore left in the text is only the paper's name of a
+    label (dot_XP2, Gen_Chasles), and no letter of the text carries a script set in math (X_rX_r once printed
+    X\\_r X$_r$: a script glued to the next letter is not read as one; E_jE_j, α_iF_i, F_Ωė, R_λU the same)."""
+    from stiefelsym.latex import tex_words
+    labels = _paper_labels()
+    bad = []
+    for c in catalog:
+        tex = _without_typewriter(tex_words(c.title))
+        for m in re.finditer(r"[\w*]*\\_[\w*]*", tex):
+            if m.group(0).replace("\\_", "_") not in labels:
+                bad.append((c.id, tex[max(0, m.start() - 30):m.end() + 30]))
+        bad += [(c.id, m.group(0)) for m in re.finditer(r"[A-Za-z]\\ensuremath\{_\{[^}]*\}\}", tex)]
+    assert not bad, bad
