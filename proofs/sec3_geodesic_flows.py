@@ -102,7 +102,7 @@ def submersion_geodesic_flow(s):
        unlabelled=("Remark 3.1",), kind="id",
        sizes=admissible(n_max=5, n_min=2, r_is_n=True, condition="r = n: T*V(n, n) = T*O(n), whose component det X = 1 is T*SO(n)"),
        statement=r"r=n:\ XX^T=\mathbf I_n,\ \tr(X^T\dot X)=0,\quad \Omega=\dot XX^T=\mathbb A(\Phi),\quad \Phi=2PX^T,\quad "
-                 r"H_\mathbb A=\tfrac12\langle\Phi,\Omega\rangle,\quad \tfrac{d}{dt}H_\mathbb A(X\exp(s\eta),P\exp(s\eta))\big|_{s=0}=0,\quad "
+                 r"H_{\mathbb A}=\tfrac12\langle\Phi,\Omega\rangle,\quad \tfrac{d}{ds}H_{\mathbb A}(Xe^{s\eta},Pe^{s\eta})\big|_{s=0}=0,\quad "
                  r"\dot\Phi=[\mathbb A(\Phi),\Phi],\quad \tfrac{d}{dt}(X^T\Phi X)=0")
 def right_invariant_geodesic_flow(s):
     """At r = n, where V(n, n) = O(n) (XXᵀ = I) and the flow (dot_XP2) keeps det X (so it keeps SO(n)), (dot_XP2) is the geodesic flow of the right-invariant metric ½⟨𝔸⁻¹Ω, Ω⟩ of the space angular velocity Ω = ẊX⁻¹: the momentum Φ of the left action is the right-translated momentum 2PXᵀ (the factor 2 of ⟨ξ, η⟩ = −½tr(ξη)), Ω = 𝔸(Φ), H_𝔸 = ½⟨Φ, Ω⟩ is invariant under the right action (X, P) ↦ (XR, PR), and the flow is the Euler–Arnold equation Φ̇ = [𝔸(Φ), Φ] of that metric with the body momentum XᵀΦX conserved."""

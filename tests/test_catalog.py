@@ -193,3 +193,10 @@ def test_no_title_leaves_a_script_in_the_text_font(catalog):
                 bad.append((c.id, tex[max(0, m.start() - 30):m.end() + 30]))
         bad += [(c.id, m.group(0)) for m in re.finditer(r"[A-Za-z]\\ensuremath\{_\{[^}]*\}\}", tex)]
     assert not bad, bad
+
+
+def test_every_statement_is_set_as_mathematics(catalog):
+    """A statement the report cannot set as a display (math_ok: balanced, the vocabulary of mathematics, a
+    grammatical formula; H_\\mathbb A is not, H_{\\mathbb A} is) would be printed as plain text."""
+    from stiefelsym.latex import math_ok
+    assert [c.id for c in catalog if not math_ok(c.statement)] == []
