@@ -105,7 +105,7 @@ def submersion_geodesic_flow(s):
                  r"H_{\mathbb A}=\tfrac12\langle\Phi,\Omega\rangle,\quad \tfrac{d}{ds}H_{\mathbb A}(Xe^{s\eta},Pe^{s\eta})\big|_{s=0}=0,\quad "
                  r"\dot\Phi=[\mathbb A(\Phi),\Phi],\quad \tfrac{d}{dt}(X^T\Phi X)=0")
 def right_invariant_geodesic_flow(s):
-    """At r = n, where V(n, n) = O(n) (XXᵀ = I) and the flow (dot_XP2) keeps det X (so it keeps SO(n)), (dot_XP2) is the geodesic flow of the right-invariant metric ½⟨𝔸⁻¹Ω, Ω⟩ of the space angular velocity Ω = ẊX⁻¹: the momentum Φ of the left action is the right-translated momentum 2PXᵀ (the factor 2 of ⟨ξ, η⟩ = −½tr(ξη)), Ω = 𝔸(Φ), H_𝔸 = ½⟨Φ, Ω⟩ is invariant under the right action (X, P) ↦ (XR, PR), and the flow is the Euler–Arnold equation Φ̇ = [𝔸(Φ), Φ] of that metric with the body momentum XᵀΦX conserved."""
+    """At r = n, where V(n, n) = O(n) (XXᵀ = I), the system (dot_XP2) keeps det X (so it keeps SO(n)) and is the geodesic flow of the right-invariant metric ½⟨𝔸⁻¹Ω, Ω⟩ of the space angular velocity Ω = ẊX⁻¹: the momentum Φ of the left action is the right-translated momentum 2PXᵀ (the factor 2 of ⟨ξ, η⟩ = −½tr(ξη)), Ω = 𝔸(Φ), H_𝔸 = ½⟨Φ, Ω⟩ is invariant under the right action (X, P) ↦ (XR, PR), and the flow is the Euler–Arnold equation Φ̇ = [𝔸(Φ), Φ] of that metric with the body momentum XᵀΦX conserved."""
     AA = s.sym_operator("AA")
     X, P, Phi = s.X, s.P, s.Phi
     flow = s.dirac_flow(H_submersion)
