@@ -794,3 +794,45 @@ def test_a_ring_grows_by_a_word_of_exponents_up_to_64_variables(nvars, cap):
     xs = [f.param(f"p{i}") for i in range(nvars)]
     p = R.from_se(sum(x * x for x in xs))
     assert R.cap == cap and len(R.syms) == nvars and R.text(p).count("**2") == nvars
+
+
+def _poly_mats(rows_a, rows_b):
+    import numpy as np
+    F = SymbolicField()
+    be = F.native_backend()
+    a, b = (be.from_obj(np.array([[se.sympify(x) for x in row] for row in rows], dtype=object))
+            for rows in (rows_a, rows_b))
+    assert type(a) is PolyMat and type(b) is PolyMat
+    return be, a, b
+
+
+def test_a_product_with_renamed_copies_of_rows_vanishes_exactly_as_the_whole_product():
+    """PolyBackend.product_vanishes computes only the rows of a that are not σ(another row), σ a substitution of
+    variables b does not contain (λ1 -> λ2 here), and the columns of b likewise: the same answer as the whole
+    product, both ways, on an a with rows at several values of λ."""
+    x, y, l1, l2, l3 = se.symbols("x y l1 l2 l3")
+    row = lambda l: [l * x + y, -(l * x + y) * y]           # noqa: E731  (row · (y, 1) = 0)
+    kernel = [[y, y * y * x], [1, x * y]]
+    be, a, b = _poly_mats([row(l1), row(l2), row(l3)], kernel)
+    assert be.product_vanishes(a, b) and be.is_zero(be.matmul(a, b))
+    wrong = [[y, y * y * x], [1 + x, x * y]]                # the first column is no longer in the kernel
+    be, a, b = _poly_mats([row(l1), row(l2), row(l3)], wrong)
+    assert not be.product_vanishes(a, b) and not be.is_zero(be.matmul(a, b))
+
+
+def test_a_row_that_only_looks_like_a_renamed_copy_is_multiplied():
+    """Negative controls: a row equal to σ(another row) but for one coefficient, and a row σ(another row) where σ
+    renames a variable that b contains, are multiplied, not skipped: the nonzero product is found."""
+    x, y, l1, l2 = se.symbols("x y l1 l2")
+    # the second row is the first at λ2 but for the coefficient 3 (a wrong copy): its product is not 0
+    be, a, b = _poly_mats([[l1 * x + y, -(l1 * x + y) * y], [l2 * x + y, -(l2 * x + 3 * y) * y]], [[y], [1]])
+    assert not be.product_vanishes(a, b)
+    # row · (l2, -l1 l2)ᵀ: the first row (l1, 1) gives 0, the second (l2, 1) = σ(first) with σ: l1 -> l2, which b
+    # contains: not a copy, and its product l2² − l1 l2 is not 0
+    be, a, b = _poly_mats([[l1, 1], [l2, 1]], [[l2], [-l1 * l2]])
+    assert not be.product_vanishes(a, b) and not be.is_zero(be.matmul(a, b))
+    # the same with the columns: b's second column is the first at l2 but for a sign
+    be, a, b = _poly_mats([[x, y]], [[y * l1, y * l2], [-x * l1, x * l2]])
+    assert not be.product_vanishes(a, b)
+    be, a, b = _poly_mats([[x, y]], [[y * l1, y * l2], [-x * l1, -x * l2]])
+    assert be.product_vanishes(a, b)

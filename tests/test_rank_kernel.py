@@ -195,3 +195,39 @@ def test_the_mutation_analysis_changes_the_statement_not_its_certificate():
     def kinds(graph):
         return Counter((graph.ops[x.node], x.operator, x.text) for x in sites(graph))
     assert kinds(g) == kinds(h)
+
+
+def stacked(s, v):
+    """ad_v stacked with λ1 ad_v and λ2 ad_v: rows at two values of a parameter the kernel does not contain (the
+    rows at λ2 are renamed copies of those at λ1: the exact method multiplies only one of them by K)."""
+    M = ad(s, v)
+    l1, l2 = s.scalar("lam1"), s.scalar("lam2")
+    rows = [[M[i, j] for j in range(s.n * s.n)] for i in range(s.n * s.n)]
+    return s.mat(rows + [[l1 * x for x in row] for row in rows] + [[l2 * x for x in row] for row in rows])
+
+
+def test_the_kernel_of_rows_at_several_values_of_a_parameter_proves_the_rank():
+    n, r = 3, 1
+
+    def f(s):
+        v = point(s)
+        return {"rank": Rank(stacked(s, v), n * n - n, kernel=vec(s, powers(s, v, n)))}
+    res = run_exact(_claim(f), n, r, 0)
+    detail = " ".join(c.detail for c in res.checks)
+    assert res.verdict == "proved", detail
+    assert f"{n} kernel vectors of the claim, M K = 0 identically in the chart" in detail
+
+
+def test_a_wrong_kernel_vector_of_rows_at_several_values_of_a_parameter_is_not_used():
+    """The corrupted kernel of test_a_wrong_kernel_vector_is_not_used against the stacked rows: refused."""
+    n, r = 3, 1
+
+    def f(s):
+        v = point(s)
+        P = powers(s, v, n)
+        P[-1] = P[-1] + s.A @ s.X @ s.X.T
+        return {"rank": Rank(stacked(s, v), n * n - n, kernel=vec(s, P))}
+    res = run_exact(_claim(f), n, r, 0)
+    detail = " ".join(c.detail for c in res.checks)
+    assert "of the claim, M K = 0 identically" not in detail
+    assert "the kernel certificate is not one: M K is not identically 0" in detail

@@ -1541,6 +1541,28 @@ class PolyBackend(Backend):
             return ratmat.is_zero(self, a)
         return a.z or not any(a.a.flat)
 
+    def product_vanishes(self, a, b) -> bool:
+        """Whether a b = 0 exactly (every entry of the product of the numerators the zero polynomial), computing
+        the product of the rows of a and the columns of b that are not renamed copies of others
+        (:func:`_renamed_copies`): a row of a that is σ(another row) for a substitution σ of variables that no
+        entry of b contains has σ(that row) b = σ(that row's products), zero when they are; a column of b
+        likewise by a substitution of variables no entry of a contains.  A matrix of (f(λ_j))_j at several
+        values of a parameter λ the other factor does not contain repeats one row under λ_0 -> λ_j."""
+        if type(a) is not PolyMat or type(b) is not PolyMat:
+            return self.is_zero(self.matmul(a, b))
+        (m, k), n = a.a.shape, b.a.shape[1]
+        if a.z or b.z or k == 0 or m == 0 or n == 0:
+            return True
+        R = self.ring
+        if a.ctx is not R.ctx or b.ctx is not R.ctx:
+            a, b = self._fix(a), self._fix(b)
+        rows = _renamed_copies(a.a, _variables(b.a))
+        cols = _renamed_copies(b.a.T, _variables(a.a))
+        A, B = a.a[rows], b.a[:, cols]
+        if A.size == 0 or B.size == 0:
+            return True
+        return not any(_dot_content(A, B, R.zero).flat)
+
     def block(self, grid):
         if any(type(b) is ObjMat for row in grid for b in row):
             return self._generic(np.concatenate([np.concatenate([self._obj(b) for b in row], axis=1)
@@ -1799,6 +1821,45 @@ def _dot_content(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
                     out[i] = x
                 return out.reshape(prod.shape)
     return _dot(a, b, zero)
+
+
+def _variables(a: np.ndarray) -> set[int]:
+    """The indices of the variables that occur in some entry of an array of polynomials."""
+    out: set[int] = set()
+    for x in a.flat:
+        if x:
+            out.update(i for i, e in enumerate(x.degrees()) if e)
+    return out
+
+
+def _renamed_copies(a: np.ndarray, fixed: set[int]) -> list[int]:
+    """The rows of an array of polynomials to keep: every other row equals σ(a kept row), σ the substitution of
+    the kept row's variables outside ``fixed`` (in increasing order) by the row's own (in increasing order),
+    which fixes every variable in ``fixed``; each equality is checked exactly, entry by entry.  Rows with no
+    variable outside ``fixed`` are kept."""
+    kept: list[int] = []
+    seen: dict[tuple, list[tuple[list[int], list]]] = {}
+    gens = None
+    for i, row in enumerate(a.tolist()):
+        free = sorted(_variables(a[i:i + 1]) - fixed)
+        if not free:
+            kept.append(i)
+            continue
+        key = (len(free), tuple(len(x) if x else 0 for x in row))
+        copy = False
+        for own, rep in seen.get(key, ()):
+            if gens is None:
+                gens = list(next(x for x in a.flat if x).context().gens())
+            sub = list(gens)
+            for v, w in zip(own, free):
+                sub[v] = gens[w]
+            if all(y == x.compose(*sub) if x else not y for x, y in zip(rep, row)):
+                copy = True
+                break
+        if not copy:
+            kept.append(i)
+            seen.setdefault(key, []).append((free, row))
+    return kept
 
 
 def _parity(a: np.ndarray) -> int:
