@@ -1556,8 +1556,10 @@ class PolyBackend(Backend):
         R = self.ring
         if a.ctx is not R.ctx or b.ctx is not R.ctx:
             a, b = self._fix(a), self._fix(b)
-        rows = _renamed_copies(a.a, _variables(b.a))
-        cols = _renamed_copies(b.a.T, _variables(a.a))
+        row_vars, col_vars = _row_variables(a.a), _row_variables(b.a.T)
+        in_a, in_b = set().union(*row_vars), set().union(*col_vars)
+        rows = _renamed_copies(a.a, row_vars, in_b) if in_a - in_b else list(range(m))
+        cols = _renamed_copies(b.a.T, col_vars, in_a) if in_b - in_a else list(range(n))
         A, B = a.a[rows], b.a[:, cols]
         if A.size == 0 or B.size == 0:
             return True
@@ -1823,25 +1825,28 @@ def _dot_content(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
     return _dot(a, b, zero)
 
 
-def _variables(a: np.ndarray) -> set[int]:
-    """The indices of the variables that occur in some entry of an array of polynomials."""
-    out: set[int] = set()
-    for x in a.flat:
-        if x:
-            out.update(i for i, e in enumerate(x.degrees()) if e)
+def _row_variables(a: np.ndarray) -> list[set[int]]:
+    """For each row of an array of polynomials, the indices of the variables that occur in some entry of it."""
+    out = []
+    for row in a.tolist():
+        used: set[int] = set()
+        for x in row:
+            if x:
+                used.update(i for i, e in enumerate(x.degrees()) if e)
+        out.append(used)
     return out
 
 
-def _renamed_copies(a: np.ndarray, fixed: set[int]) -> list[int]:
+def _renamed_copies(a: np.ndarray, variables: list[set[int]], fixed: set[int]) -> list[int]:
     """The rows of an array of polynomials to keep: every other row equals σ(a kept row), σ the substitution of
     the kept row's variables outside ``fixed`` (in increasing order) by the row's own (in increasing order),
     which fixes every variable in ``fixed``; each equality is checked exactly, entry by entry.  Rows with no
-    variable outside ``fixed`` are kept."""
+    variable outside ``fixed`` are kept.  ``variables``: each row's variables (:func:`_row_variables`)."""
     kept: list[int] = []
     seen: dict[tuple, list[tuple[list[int], list]]] = {}
     gens = None
     for i, row in enumerate(a.tolist()):
-        free = sorted(_variables(a[i:i + 1]) - fixed)
+        free = sorted(variables[i] - fixed)
         if not free:
             kept.append(i)
             continue
