@@ -968,7 +968,9 @@ def _kernel_rank(R: Rank, rng: random.Random, lower: int | None) -> tuple[tuple[
     if K._field is not f:
         return None, "; the kernel certificate is not a matrix of the chart's field: not used"
     # the product of the entries as they are (whatever index spaces the claim gave the kernel, only M K = 0
-    # entry by entry is relied on), in the backend's own matrices where both are held there
+    # entry by entry is relied on), in the backend's own matrices where both are held there (flint's: the rows
+    # of M that are renamed copies of others under parameters K does not contain are not multiplied again,
+    # PolyBackend.product_vanishes)
     be = backend(f)
     if be is not None:
         a, b = (X._n if X._n is not None else be.from_obj(X._view()) for X in (M, K))
