@@ -952,6 +952,14 @@ def _refuse_shadowed_helpers(p: Path, folder: str) -> None:
                 "`stiefelsym verify --claims`, which import each file in an interpreter of its own)")
 
 
+def claims_file_missing(p: Path) -> str:
+    """Why ``p`` is not a claims file that can be read: missing, or there but not a regular file (a device such
+    as /dev/stdin, a pipe, a socket), which is never read (a pipe's writer would decide what is imported)."""
+    if p.exists() and not p.is_dir():
+        return f"claims file {p} is not a regular file (a device, a pipe or a socket): give the path of a .py file"
+    return f"claims file not found: {p}"
+
+
 def load_claims_file(path: str | Path) -> Registry:
     """Load user claims from a Python file written against the public API.
 
@@ -970,7 +978,7 @@ def load_claims_file(path: str | Path) -> Registry:
     from stiefelsym.run.pool import Terminated, stdout_to_stderr
     p = Path(path)
     if not p.is_file():
-        raise CatalogError(f"claims file not found: {p}")
+        raise CatalogError(claims_file_missing(p))
     name = "stiefelsym_user_" + re.sub(r"\W", "_", p.stem)
     other = getattr(sys.modules.get(name), "__file__", None)
     if other and Path(other).resolve() != p.resolve():   # two files of the same name: keep both modules

@@ -66,7 +66,7 @@ from stiefelsym.run.pool import DEFAULT_MEMORY_GIB, GIB, write_fully
 from stiefelsym.run.confine import ProcessesLeft
 from stiefelsym.run.isolate import next_chunk
 from stiefelsym.claims import (IMPORT_SECONDS, CatalogError, Claim, ClaimTimeout, Correction, Registry, Size, SizeSpec,
-                               load_claims_file)
+                               claims_file_missing, load_claims_file)
 from stiefelsym.ir import GraphUnavailable
 
 #: sizes n <= this get an entry in the admits table (the free method checks a declared r up to here)
@@ -1610,7 +1610,7 @@ def load_claims_isolated(path: str | Path, sizes: Iterable[Any] = (), only: Iter
     needed = list(dict.fromkeys(needed))
     p = Path(path)
     if not p.is_file():
-        raise CatalogError(f"claims file not found: {p}")
+        raise CatalogError(claims_file_missing(p))
     engine = _digests()
     spawned: list[bool] = []
 
