@@ -1273,6 +1273,16 @@ class TracedFunction:
             raise NoGraph(f"{self.__name__} was traced in the {self.realization} realization only, "
                           f"not in the {t.constraints[0]} one")
         entry = self._table.get(key)
+        if entry is None and key is not None and type(self._table.get(None)) is dict:
+            # traced with symbolic sizes, which serves every size, so not at this one: that graph was refused here
+            # (a replay that failed leaves its data in the table), and the refusal is the reason, not the sizes
+            try:
+                self._replay(_graph(self._table[None]), name=self.__name__)
+                why = ""
+            except Exception as exc:        # noqa: BLE001 (the replay's refusal, whatever its type, is the reason)
+                why = f": {type(exc).__name__}: {exc}"
+            raise NoGraph(f"{self.__name__} has no graph at ({n},{r}): its claims file's child traced it with "
+                          f"symbolic sizes (a graph that serves every size), and that graph was refused here{why}")
         if entry is None:
             where = "with symbolic sizes" if key is None else f"at ({n},{r})"
             have = ", ".join(f"({a},{b})" for a, b in self.sizes()) or "none"

@@ -1,14 +1,18 @@
 """Stop 95, h2 (an adversary of the eight routes of issue 20 and beyond): what `check --no-rerun` says of the
-verdicts it did not run again, and a claims path that names a device or a pipe."""
+verdicts it did not run again, a claims path that names a device or a pipe, and a graph with symbolic sizes that the
+replay refuses."""
 from __future__ import annotations
 
 import json
 import os
+from pathlib import Path
 
 import pytest
 
 import stiefelsym
 from stiefelsym.claims import CatalogError
+
+FILES = Path(__file__).with_name("s95") / "h2"
 
 def _run_cli(args):
     from click.testing import CliRunner
@@ -45,3 +49,26 @@ def test_a_claims_path_that_is_not_a_regular_file_is_named_so(tmp_path, path):
     missing = str(tmp_path / "missing.py")
     r = _run_cli(["verify", "--claims", missing, "--no-report"])
     assert r.exit_code == 2 and f"claims file not found: {missing}" in r.output, r.output
+
+
+def test_a_symbolic_graph_refused_by_the_replay_is_named_at_every_size():
+    """A thread of a claim (s95/h2/p1_python.py, h2p-thread) appended an operation to the graph traced with symbolic
+    sizes after the child's own replay had passed it, racing the child's output: each sized run was an `error`
+    saying that the file was traced "at the sizes the run needed only (none)"; it names the replay's refusal of
+    the graph that serves every size (a finalizer that does it as the claim returns, p2_thread_graph.py, is caught
+    in the child)."""
+    from stiefelsym.ir import compile_claim
+    from stiefelsym.run.userfile import NoGraph, TracedFunction, _graph_state
+    from stiefelsym.scene import REALIZATIONS
+    standard = (REALIZATIONS["standard"].name, REALIZATIONS["standard"].build)
+
+    def true(s):
+        return {"r": s.X.T @ s.P + s.P.T @ s.X}
+    data = json.loads(json.dumps(_graph_state(compile_claim(true, None, None, standard))))
+    data["ops"].append("add")
+    f = TracedFunction("true", "standard", [[None, data]], "x.py", 1)
+    with pytest.raises(NoGraph, match=r"traced it with symbolic sizes \(a graph that serves every size\), and that "
+                       r"graph was refused here: ReplayError: refused: a graph whose ops and arguments differ"):
+        compile_claim(f, 2, 1, standard)
+    res = stiefelsym.verify(files=str(FILES / "p2_thread_graph.py"), sizes=[(2, 1)], methods=["modular"], jobs=1)
+    assert [r.verdict for r in res] == ["error"] and "refused when the tracer replays it" in res[0].message
