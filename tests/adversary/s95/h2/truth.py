@@ -68,7 +68,17 @@ def d1(name, X, P, A, lam, n, r):
     return None
 
 
+def flow_entry(X, P, A, lam, n, r):
+    """d tr(P^T A X)/dt a_1 along the Dirac flow of tr P^T P / 2 + (X^T A X)_{12}: X' = P, P' = -A X S + X Lam."""
+    S = np.zeros((r, r))
+    S[0, 1] = S[1, 0] = 1
+    Lam = (X.T @ A @ X @ S + S @ X.T @ A @ X) / 2 - P.T @ P
+    Pd = -A @ X @ S + X @ Lam
+    return np.array([(np.trace(Pd.T @ A @ X) + np.trace(P.T @ A @ P)) * A[0, 0]])
+
+
 SIMPLE = {
+    "h2r-flow-entry": flow_entry,
     "h2c-true": lambda X, P, A, lam, n, r: X.T @ P + P.T @ X,
     "h2c-false": lambda X, P, A, lam, n, r: X.T @ P,
     "h2s-family-str": lambda X, P, A, lam, n, r: X.T @ P,
