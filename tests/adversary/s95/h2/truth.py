@@ -77,6 +77,32 @@ def flow_entry(X, P, A, lam, n, r):
     return np.array([(np.trace(Pd.T @ A @ X) + np.trace(P.T @ A @ P)) * A[0, 0]])
 
 
+def cpoint(n, r):
+    """A point Z of the complex W(n, r) (Z^* Z = I) and a tangent vector V (Z^* V + V^* Z = 0), realified."""
+    Z = np.linalg.qr(rng.standard_normal((n, n)) + 1j * rng.standard_normal((n, n)))[0][:, :r]
+    W = rng.standard_normal((r, r)) + 1j * rng.standard_normal((r, r))
+    V = Z @ (W - W.conj().T) + (np.eye(n) - Z @ Z.conj().T) @ (rng.standard_normal((n, r)) + 0j)
+
+    def re(M):
+        return np.block([[M.real, -M.imag], [M.imag, M.real]])
+    return re(Z), re(V)
+
+
+def cJ(m):
+    return np.block([[np.zeros((m, m)), -np.eye(m)], [np.eye(m), np.zeros((m, m))]])
+
+
+def complex_claims(name, n, r):
+    Z, V = cpoint(n, r)
+    return {"h2z-unitary": lambda: Z.T @ Z - np.eye(2 * r), "h2z-tangent": lambda: Z.T @ V + V.T @ Z,
+            "h2z-tangent-false": lambda: Z.T @ V, "h2z-imag-false": lambda: (Z.T @ V)[r:, :r],
+            "h2z-real-false": lambda: Z[n:, :r], "h2z-first-entry-false": lambda: np.array([Z[n, 0]]),
+            "h2z-complex-structure": lambda: cJ(n) @ Z - Z @ cJ(r),
+            "h2z-projector-false": lambda: Z @ Z.T - np.eye(2 * n),
+            "h2z-conj-false": lambda: (np.diag([1.0] * n + [-1.0] * n) @ Z @ np.diag([1.0] * r + [-1.0] * r)).T @ Z
+            - np.eye(2 * r)}[name]()
+
+
 SIMPLE = {
     "h2r-flow-entry": flow_entry,
     "h2c-true": lambda X, P, A, lam, n, r: X.T @ P + P.T @ X,
@@ -101,7 +127,10 @@ def holds(name, n, r):
     for _ in range(3):
         X, P, A, lam = point(n, r)
         try:
-            v = SIMPLE[name](X, P, A, lam, n, r) if name in SIMPLE else d1(name, X, P, A, lam, n, r)
+            if name.startswith("h2z-"):
+                v = complex_claims(name, n, r)
+            else:
+                v = SIMPLE[name](X, P, A, lam, n, r) if name in SIMPLE else d1(name, X, P, A, lam, n, r)
         except np.linalg.LinAlgError:
             return None         # not defined at this size (P^T P singular: r = n odd, n = 1)
         if v is None:
