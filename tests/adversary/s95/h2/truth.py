@@ -110,6 +110,10 @@ SIMPLE = {
     "h2s-family-str": lambda X, P, A, lam, n, r: X.T @ P,
     "h2s-family-hash": lambda X, P, A, lam, n, r: X.T @ P,
     "h2s-family-type": lambda X, P, A, lam, n, r: X.T @ P + P.T @ X,
+    "h2p-recursion": lambda X, P, A, lam, n, r: X.T @ P + P.T @ X,
+    "h2p-recursion-left": lambda X, P, A, lam, n, r: X.T @ P,
+    "h2p-frame": lambda X, P, A, lam, n, r: X.T @ P,
+    "h2p-excepthook": lambda X, P, A, lam, n, r: X.T @ P,
     "h2h-gap": lambda X, P, A, lam, n, r: np.array([A[1, 1] - A[0, 0] - 1e-9]),
     "h2h-large": lambda X, P, A, lam, n, r: np.array([np.trace(P.T @ P)]),
 }
