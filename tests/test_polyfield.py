@@ -754,6 +754,39 @@ def test_a_product_cancels_the_atoms_of_its_denominator_that_divide_its_numerato
     assert R.rf_mul(one, e) == e
 
 
+def test_a_product_cancels_on_its_factors_as_the_product_itself_would():
+    """The atoms of a product's denominator are divided out of its two factors (an irreducible atom divides
+    n1 n2 as often as it divides n1 plus n2): the numerator and atoms are exactly those of cancelling the
+    expanded product, for reduced and unreduced factors (an atom of a factor's own denominator dividing its
+    numerator: a sum over a common denominator), atoms shared by both denominators, and a numerator
+    divisible by an atom more often than its exponent; a numerator no atom divides keeps every atom (the
+    failed divisions are a negative control), one an atom divides loses it."""
+    from stiefelsym.backends.polyfield import PolyRing
+    R = PolyRing()
+    x, y, z = (R.var(se.Symbol(n)) for n in "xyz")
+    (_, (u,)), (_, (v,)), (_, (w,)) = R.factor(x - y), R.factor(y - z), R.factor(x * x + y * z + 1)
+    k, l, m = u[0], v[0], w[0]
+    nums = [R.one, x + 3, (x - y) ** 3 * (z + 1), (y - z) * (x - y), (x * x + y * z + 1) * (x - z),
+            (x - y) * (y - z) ** 2 * (x * x + y * z + 1)]
+    dens = [(), ((k, 1),), ((k, 2), (l, 1)), ((l, 3),), ((k, 1), (m, 2)), ((k, 1), (l, 1), (m, 1))]
+    rng = random.Random(4)
+    for _ in range(40):
+        a = (rng.choice(nums) * (rng.randint(1, 5) * x - y + rng.randint(-2, 2)), rng.choice(dens))
+        b = (rng.choice(nums) * (z - rng.randint(-3, 3)), rng.choice(dens))
+        expected = R.cancel(a[0] * b[0], R_merge(a[1], b[1]))
+        assert R.rf_mul(a, b) == expected
+        assert R.rf_mul(b, a) == expected
+    # the negative control: x + 3 and z + 1 are divisible by none of the atoms, so nothing cancels
+    assert R.rf_mul((x + 3, ((k, 1),)), (z + 1, ((l, 2),))) == ((x + 3) * (z + 1), ((k, 1), (l, 2)))
+    # a divisible one: (x - y)^3 / ((x - y)^2 (y - z)) times (y - z) / (x - y) is 1, every atom divided out
+    assert R.rf_mul(((x - y) ** 3, ((k, 2), (l, 1))), (y - z, ((k, 1),))) == (R.one, ())
+
+
+def R_merge(d1: tuple, d2: tuple) -> tuple:
+    from stiefelsym.backends.denominators import _merge_add
+    return _merge_add(d1, d2)
+
+
 def test_a_product_of_transposes_is_the_transpose_of_the_product_met_before():
     """a b = (bᵀ aᵀ)ᵀ: once a b is computed, bᵀ aᵀ is its transpose (no new product), with the value symengine gives;
     a product of other operands (aᵀ bᵀ, a product with a copy of a) is computed, and each value is symengine's."""
