@@ -1239,11 +1239,39 @@ def _refused_nonzero(claim: Claim, n: int, r: int, method: str, seed: int | None
     return res
 
 
+#: the largest structural degree of a residual (or rank minor) that the exact and rational methods write out: the
+#: terms of a symbolic polynomial, and the digits of a rational value, grow with the degree.  Beyond it they answer
+#: ``inconclusive`` at once, where they would otherwise expand until their time or memory ran out ((t/(t+1))^(2^40)
+#: ran 140 s before flint failed to allocate); the modular and float methods evaluate any degree.  The catalog's
+#: residuals are of degree below 10^3.
+EXPANDABLE_DEGREE = 1 << 20
+
+
+def _beyond_expansion(claim: Claim, n: int, r: int, method: str, seed: int | None, func: Callable) -> Result | None:
+    """An ``inconclusive`` record for a claim whose structural degree bound (:func:`degree_bound`, degree markers:
+    no value is expanded) exceeds :data:`EXPANDABLE_DEGREE`; None otherwise, and where the bound is not found (the
+    method itself then says what is wrong with the claim)."""
+    try:
+        deg = degree_bound(claim, n, r, func).numerator
+    except Exception:   # noqa: BLE001 - a claim that does not trace or reads values: the run says why
+        return None
+    if deg <= EXPANDABLE_DEGREE:
+        return None
+    res = _base_result(claim, n, r, method, seed)
+    res.verdict = "inconclusive"
+    res.message = (f"the structural degree bound of its residuals is {deg}, beyond the {EXPANDABLE_DEGREE} that the "
+                   f"{method} method writes out (its {'terms' if method == 'exact' else 'numbers'} grow with the "
+                   f"degree); the modular method evaluates any degree")
+    return res
+
+
 @_quoting
 def run_exact(claim: Claim, n: int, r: int, seed: int, func: Callable | None = None,
               time_budget: float | None = EXACT_TIME_LIMIT) -> Result:
     func = func or claim.func
     refused = _refused_nonzero(claim, n, r, "exact", None, func)
+    if refused is None:
+        refused = _beyond_expansion(claim, n, r, "exact", None, func)
     if refused is not None:
         return refused
     whole = _CHECKS.get() is None
@@ -2694,6 +2722,8 @@ def run_points(claim: Claim, n: int, r: int, kind: str, seed: int, func: Callabl
     search, whose passes claim no more than their bound).  Hard cases are evaluated at POINTS_MIN
     points (or ``trials``), with no bound."""
     refused = _refused_nonzero(claim, n, r, kind, seed, func)
+    if refused is None and kind == "rational":
+        refused = _beyond_expansion(claim, n, r, kind, seed, func or claim.func)
     if refused is not None:
         return refused
     options = _prepare(options)

@@ -72,3 +72,20 @@ def test_a_symbolic_graph_refused_by_the_replay_is_named_at_every_size():
         compile_claim(f, 2, 1, standard)
     res = stiefelsym.verify(files=str(FILES / "p2_thread_graph.py"), sizes=[(2, 1)], methods=["modular"], jobs=1)
     assert [r.verdict for r in res] == ["error"] and "refused when the tracer replays it" in res[0].message
+
+
+@pytest.mark.parametrize("cid", ["h2f-pow-huge", "h2f-pow-diff"])
+def test_a_degree_beyond_expansion_is_inconclusive_at_once_where_the_modular_method_refutes(cid):
+    """(t/(t+1))^(2^40) = 0 and u^(2^62) − u^(2^62 + 2^61) = 0 (false): the exact and rational methods expanded them
+    until flint failed to allocate (≈ 140 s, then `inconclusive` or `error`); their structural degree bound is read
+    from degree markers before any value is written out, so both answer `inconclusive` at once, naming the bound,
+    and the modular method still refutes them.  The catalog's degrees are far below the limit."""
+    from stiefelsym.methods import fixed_size as fs
+    claims = stiefelsym.load(files=[FILES / "f1_powers.py"], catalog=False)
+    c = next(x for x in claims if x.id == cid)
+    for res in (fs.run_exact(c, 2, 1, 0), fs.run_points(c, 2, 1, "rational", 0)):
+        assert res.verdict == "inconclusive", res.message
+        assert "structural degree bound" in res.message and str(fs.EXPANDABLE_DEGREE) in res.message
+    assert fs.run_points(c, 2, 1, "modular", 0).verdict == "fails"
+    small = next(x for x in claims if x.id == "h2f-pow-small")      # degree 4096: written out, refuted
+    assert fs.run_exact(small, 2, 1, 0).verdict == "fails"
