@@ -568,7 +568,7 @@ def rotation(s):
 
 
 @claim("gen-chasles2", paper=("Gen_Chasles2", "VVB", "conf", "conf0"), unlabelled=("Remark 8.2",), kind="geo",
-       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 2, 4: 2, 5: 1, 6: 1, 7: 1},
+       sizes=admissible(n_max=5), exact_max_n=2, exact_max_r={3: 3, 4: 2, 5: 2, 6: 1, 7: 1},
        statement=r"\mathcal V(XB,PB)\begin{pmatrix}B^{-1}&0\\0&B^{-1}\end{pmatrix}=\begin{pmatrix}\mathbf I_n&0\\0&B^{-1}"
                  r"\end{pmatrix}\mathcal V(X,P),\ \det(\mathcal V(XB,PB)^TB(\lambda)\mathcal V(XB,PB))="
                  r"\det(\mathcal V^TB(\lambda)\mathcal V),\ B\in SO(r);\quad \mathfrak i(x)\in\bar Q(\lambda)\iff "
