@@ -32,7 +32,7 @@ def top_rank_stiefel_variety(s):
     return {"det X − 1": det(s, entries(s.X, s.n, s.n)) - s.q(1)}
 
 
-@top_rank_stiefel_variety.claim.correction("O(n) in place of SO(n): det X = ±1, both signs occur")
+@top_rank_stiefel_variety.claim.correction("O(n) in place of SO(n): det X = ±1, both signs occur", exact_max_r={5: 5, 6: 6})
 def top_rank_stiefel_variety_corrected(s):
     d = det(s, entries(s.X, s.n, s.n))
     return {"det(X)² − 1": d * d - s.q(1)}
