@@ -41,3 +41,13 @@ def test_corrupted_copies_fail(catalog):
         run = run_exact if method == "exact" else (lambda c, n, r, seed, func: run_points(c, n, r, "modular", seed, func))
         assert run(top, 3, 3, SEED, func=det_squared_is_two).verdict == "fails"
         assert run(corank, 3, 2, SEED, func=completion_without_the_sign).verdict == "fails"
+
+
+def test_the_correction_is_proved_exactly_at_the_raised_sizes_and_a_corrupted_copy_fails(catalog):
+    c = catalog.get("stiefel-top-rank")
+    (corr,) = c.corrections
+    corrected = c.corrected(0)
+    for n in (5, 6):
+        assert corrected.exact_at(n, n) and not c.exact_at(n, n)
+    assert run_exact(c, 5, 5, SEED, func=corr.func).verdict == "proved"
+    assert run_exact(c, 5, 5, SEED, func=det_squared_is_two).verdict == "fails"
