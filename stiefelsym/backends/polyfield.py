@@ -80,6 +80,19 @@ def _incompatible_error():
     return (_FLINT_ERRORS or _flint_errors())[1]
 
 
+def _divide_out(n, f, e: int) -> tuple:
+    """(n / f^k, e − k) for the largest k ≤ e such that f^k divides n (exact divisions, each tried
+    once: flint's failed division is the test)."""
+    DomainError = _domain_error()
+    while e > 0:
+        try:
+            n = n / f
+        except DomainError:
+            break
+        e -= 1
+    return n, e
+
+
 _CONTEXTS: dict[int, tuple] = {}
 
 
@@ -273,22 +286,11 @@ class PolyRing:
         over given atoms is unique), with divisions of the smaller factors, and the product is taken of
         the quotients (gen-chasles2 at (3, 3): the products and failed divisions of 6 x 6 Laplace
         expansions over (a_i - λ))."""
-        DomainError = _domain_error()
         out = []
         for k, e in d:
             f = self.atoms[k]
-            while e > 0:
-                try:
-                    n1 = n1 / f
-                except DomainError:
-                    break
-                e -= 1
-            while e > 0:
-                try:
-                    n2 = n2 / f
-                except DomainError:
-                    break
-                e -= 1
+            n1, e = _divide_out(n1, f, e)
+            n2, e = _divide_out(n2, f, e)
             if e:
                 out.append((k, e))
         return (n1 * n2, tuple(out))
@@ -311,17 +313,10 @@ class PolyRing:
     def cancel(self, n, d: tuple, only=None) -> tuple:
         """(n', d'): n over the atoms d (with exponents), every atom (of ``only``, if given)
         divided out of n as often as it divides it (exact divisions)."""
-        DomainError = _domain_error()
         out = []
         for k, e in d:
             if only is None or k in only:
-                f = self.atoms[k]
-                while e > 0:
-                    try:
-                        n = n / f
-                    except DomainError:
-                        break
-                    e -= 1
+                n, e = _divide_out(n, self.atoms[k], e)
             if e:
                 out.append((k, e))
         return (n, tuple(out))

@@ -504,6 +504,19 @@ def constants(g: Graph) -> list:
     return out
 
 
+def power_exponents(g: Graph) -> int:
+    """The product of |k| over the graph's powers x^k (1 where it has none): a structural degree can exceed the
+    degree of the graph's products only by this factor, each power multiplying the degree of its base by |k|."""
+    cached = g.cache.get("powers")
+    if cached is None:
+        cached = 1
+        for op, a in zip(g.ops, g.args):
+            if op == "pow" and len(a) > 1 and type(a[1]) is int:
+                cached *= max(1, abs(a[1]))
+        g.cache["powers"] = cached
+    return cached
+
+
 #: the exponent range in which a constant's float64 value and its error term are normal numbers
 FLOAT_EXPONENT_LIMIT = 1000
 

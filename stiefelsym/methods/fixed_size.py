@@ -45,7 +45,8 @@ from stiefelsym.ir.derivative import derivatives, scene_flows
 from stiefelsym.ir.notation import power_of_ten
 from stiefelsym.ir.evaluate import evaluate
 from stiefelsym.ir.seal import verify as verify_engine
-from stiefelsym.ir.passes import BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_needs, coordinate_reads, outside_float_range
+from stiefelsym.ir.passes import (BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_needs, coordinate_reads, outside_float_range,
+                                  power_exponents)
 from stiefelsym.scene import REALIZATIONS
 from stiefelsym.backends.fields import (PRIME_BITS, PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget, random_prime)
@@ -1246,13 +1247,25 @@ def _refused_nonzero(claim: Claim, n: int, r: int, method: str, seed: int | None
 #: residuals are of degree below 10^3.
 EXPANDABLE_DEGREE = 1 << 20
 
+#: the product of the exponents of a graph's powers up to which the structural degree bound is not computed
+#: before an exact or rational run: a degree beyond :data:`EXPANDABLE_DEGREE` is then reached only through
+#: products, each of them written out by the method (the terms grow with it, and the run's time budget stops
+#: it); a single power x^k is k products in one node.  The catalog has no power.
+POWER_GATE = 1 << 8
+
 
 def _beyond_expansion(claim: Claim, n: int, r: int, method: str, seed: int | None, func: Callable) -> Result | None:
     """An ``inconclusive`` record for a claim whose structural degree bound (:func:`degree_bound`, degree markers:
-    no value is expanded) exceeds :data:`EXPANDABLE_DEGREE`; None otherwise, and where the bound is not found (the
-    method itself then says what is wrong with the claim)."""
+    no value is expanded) exceeds :data:`EXPANDABLE_DEGREE`; None otherwise, where the graph's powers are within
+    :data:`POWER_GATE`, and where the bound is not found (the method itself then says what is wrong with the
+    claim)."""
     try:
+        cons = REALIZATIONS[claim.realization or "standard"]
+        if power_exponents(_claim_graph(func, n, r, (cons.name, cons.build))) <= POWER_GATE:
+            return None
         deg = degree_bound(claim, n, r, func).numerator
+    except Expired:
+        raise
     except Exception:   # noqa: BLE001 - a claim that does not trace or reads values: the run says why
         return None
     if deg <= EXPANDABLE_DEGREE:

@@ -89,3 +89,33 @@ def test_a_degree_beyond_expansion_is_inconclusive_at_once_where_the_modular_met
     assert fs.run_points(c, 2, 1, "modular", 0).verdict == "fails"
     small = next(x for x in claims if x.id == "h2f-pow-small")      # degree 4096: written out, refuted
     assert fs.run_exact(small, 2, 1, 0).verdict == "fails"
+
+
+def test_the_degree_pass_runs_where_powers_multiply_past_the_gate(tmp_path):
+    """The structural degree bound is computed before an exact run only where the graph's powers multiply to more
+    than POWER_GATE (a product of exponents, so nested powers count): (x^20)^20 has 400 > 256 and is read, x^2 is not
+    (its degree grows only through products, each written out by the method)."""
+    from stiefelsym.ir.passes import power_exponents
+    from stiefelsym.methods import fixed_size as fs
+    from stiefelsym.scene import REALIZATIONS
+    f = tmp_path / "nested.py"
+    f.write_text(
+        "from stiefelsym import claim, admissible\n"
+        "@claim('nested-huge', kind='id', sizes=admissible(n_min=2, n_max=3))\n"
+        "def nested(s):\n"
+        "    '''False: ((t/(t+1))^2048)^1024 = 0.'''\n"
+        "    t = s.tr(s.P.T @ s.P)\n"
+        "    return {'r': ((t / (t + 1)) ** 2048) ** 1024}\n"
+        "@claim('square', kind='id', sizes=admissible(n_min=2, n_max=3))\n"
+        "def square(s):\n"
+        "    '''True: (tr PᵀP)² − tr PᵀP · tr PᵀP = 0.'''\n"
+        "    t = s.tr(s.P.T @ s.P)\n"
+        "    return {'r': t ** 2 - t * t}\n")
+    claims = {c.id: c for c in stiefelsym.load(files=[f], catalog=False)}
+    cons = REALIZATIONS["standard"]
+    graph = lambda c: fs._claim_graph(c.func, 2, 1, (cons.name, cons.build))
+    assert power_exponents(graph(claims["nested-huge"])) == 2048 * 1024 > fs.POWER_GATE
+    assert power_exponents(graph(claims["square"])) == 2 <= fs.POWER_GATE
+    res = fs.run_exact(claims["nested-huge"], 2, 1, 0)
+    assert res.verdict == "inconclusive" and "structural degree bound" in res.message
+    assert fs.run_exact(claims["square"], 2, 1, 0).verdict == "proved"
