@@ -572,6 +572,8 @@ class Deg:
         self.h = -math.inf if num < 0 else (h if h > 0.0 else 0.0)
         #: the value, when the marker stands for a rational constant
         self.c = c
+        if field is not None and num > field.peak:
+            field.peak = num
 
     def _lift(self, o):
         if type(o) is Deg:
@@ -643,6 +645,7 @@ class Deg:
             den = dict(self.den)
             for k, e in o.den.items():
                 den[k] = den.get(k, 0) + e
+            self.f.note_denominator(den)
         return Deg(self.num + o.num, den, self.f, self.h + o.h)
 
     __rmul__ = __mul__
@@ -665,6 +668,7 @@ class Deg:
         key = self.f.new_factor(o.num, o.h)
         den = dict(self.den)
         den[key] = den.get(key, 0) + 1
+        self.f.note_denominator(den)
         return Deg(self.num + self._dd(o.den), den, self.f, self.h + self._dh(o.den))
 
     def __rtruediv__(self, o):
@@ -687,6 +691,16 @@ class DegreeField(Field):
         #: the distinct constants a/b met; sum of log2|a| + log2 b over them
         self.constants: set[Fraction] = set()
         self.constant_bits = 0.0
+        #: the largest degree of a numerator or a denominator of any value the markers stood for, the
+        #: residuals' and every value computed on the way (u^(2^40) in (u^(2^40))^0 or 0 * u^(2^40)): what
+        #: an exact evaluation of the same computation writes out
+        self.peak = 0
+
+    def note_denominator(self, den: dict) -> None:
+        """Record the degree of a denominator made by a product or a division in :attr:`peak`."""
+        d = self.den_degree(den)
+        if d > self.peak:
+            self.peak = d
 
     def record(self) -> tuple:
         """What the markers met so far (denominator factors, constants), copied: see :meth:`restore`."""

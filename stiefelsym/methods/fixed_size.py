@@ -1263,16 +1263,20 @@ def _beyond_expansion(claim: Claim, n: int, r: int, method: str, seed: int | Non
         cons = REALIZATIONS[claim.realization or "standard"]
         if power_exponents(_claim_graph(func, n, r, (cons.name, cons.build))) <= POWER_GATE:
             return None
-        deg = degree_bound(claim, n, r, func).numerator
+        bound = degree_bound(claim, n, r, func)
     except Expired:
         raise
     except Exception:   # noqa: BLE001 - a claim that does not trace or reads values: the run says why
         return None
+    # a value on the way is written out as well, whether or not the residuals keep its degree (u^(2^40) in
+    # (u^(2^40))^0 = 1 or in 0 * u^(2^40))
+    deg, what = ((bound.numerator, "its residuals") if bound.numerator >= bound.peak else
+                 (bound.peak, "a value it computes (a numerator or a denominator on the way to its residuals)"))
     if deg <= EXPANDABLE_DEGREE:
         return None
     res = _base_result(claim, n, r, method, seed)
     res.verdict = "inconclusive"
-    res.message = (f"the structural degree bound of its residuals is {deg}, beyond the {EXPANDABLE_DEGREE} that the "
+    res.message = (f"the structural degree bound of {what} is {deg}, beyond the {EXPANDABLE_DEGREE} that the "
                    f"{method} method writes out (its {'terms' if method == 'exact' else 'numbers'} grow with the "
                    f"degree); the modular method evaluates any degree")
     return res
@@ -2388,6 +2392,7 @@ class DegreeBound:
     denominator: int        # total degree of all denominators met (for resampling)
     height: float = 0.0     # max log2 of the L1 norm of an integer numerator polynomial (entries, minors)
     constant_bits: float = 0.0   # sum of log2|a| + log2 b over the constants a/b of the claim
+    peak: int = 0           # max degree of a numerator or denominator of any value computed, residual or not
 
 
 #: degree bounds computed in this process, per (claim, function, size): a claim's bound is
@@ -2440,7 +2445,7 @@ def _read_bound(checks: dict[str, Any], deg: DegreeField, marker: Callable, matr
         for x in markers:
             if not x.zero:
                 num, height = max(num, x.num), max(height, x.h)
-    return DegreeBound(num, sum(deg.factor_degree.values()), height, deg.constant_bits)
+    return DegreeBound(num, sum(deg.factor_degree.values()), height, deg.constant_bits, deg.peak)
 
 
 def _rank_minor_bound(R: Rank, field: DegreeField, marker: Callable) -> tuple[int, float]:
