@@ -28,3 +28,47 @@ def test_a_value_beyond_expansion_on_the_way_is_inconclusive_at_once(cid, truth)
     assert fs.run_points(c, 2, 1, "modular", 0).verdict == ("checked" if truth == "holds" else "fails")
     bound = fs.degree_bound(c, 2, 1)
     assert bound.peak >= 2 ** 40 > fs.EXPANDABLE_DEGREE >= bound.numerator
+
+
+SCALE = [1]
+
+
+def test_a_function_changed_after_a_run_in_the_callers_process_is_traced_again():
+    """A claim of the caller's own process (``claim(...)(f).claim``), proved at (3, 2), then its function's
+    ``__code__`` swapped for X^T P = 0's, one of its defaults set to 0, or a global it reads rebound: the graph
+    cache (keyed by the function's identity) handed back the first graph, and exact, modular and float said
+    `proved`, `checked`, `numeric` of a false statement (a fresh process: `fails`).  The cache keeps what the
+    function computes with beside its graph (its code, defaults, closure and the globals it and its helpers read,
+    as the review of the catalog's functions does) and traces a function changed since again."""
+    from stiefelsym import admissible, claim
+    from stiefelsym.methods import fixed_size as fs
+
+    def body(s):
+        return {"r": s.X.T @ s.P + s.P.T @ s.X}
+
+    def false_body(s):
+        return {"r": s.X.T @ s.P}
+
+    def by_default(s, k=1):
+        return {"r": s.X.T @ s.P + s.P.T @ s.X * k}
+
+    def by_global(s):
+        return {"r": s.X.T @ s.P + s.P.T @ s.X * SCALE[0]}
+
+    sz = admissible(n_min=2, n_max=3)
+    c1 = claim("h4s-code", kind="id", sizes=sz)(body).claim
+    c2 = claim("h4s-default", kind="id", sizes=sz)(by_default).claim
+    c3 = claim("h4s-global", kind="id", sizes=sz)(by_global).claim
+    for c in (c1, c2, c3):
+        assert fs.run_exact(c, 3, 2, 0).verdict == "proved"
+        assert fs.run_points(c, 3, 2, "modular", 0).verdict == "checked"
+    body.__code__ = false_body.__code__
+    by_default.__defaults__ = (0,)
+    SCALE[0] = 0
+    try:
+        for c in (c1, c2, c3):
+            assert fs.run_exact(c, 3, 2, 0).verdict == "fails", c.id
+            assert fs.run_points(c, 3, 2, "modular", 0).verdict == "fails", c.id
+            assert [r.verdict for r in stiefelsym.verify([c], sizes=[(3, 2)], methods=["float"], jobs=1)] == ["fails"]
+    finally:
+        SCALE[0] = 1
