@@ -3414,12 +3414,22 @@ def _run_float(claim: Claim, n: int, r: int, seed: int, func: Callable, options:
         pos, x = run.entry
         res.residual = f"{pos} = {x!r}"
         ex = run_points(claim, n, r, "rational", seed, func, trials=1, options=options)
+        if ex.verdict == "inconclusive":
+            # the rational point not evaluated (a degree beyond what it writes out): a point modulo a prime is,
+            # at any degree, and its nonzero residual is as certain a witness
+            mod = run_points(claim, n, r, "modular", seed, func, trials=1, options=options)
+            if mod.verdict == "fails":
+                ex = mod
         if ex.verdict == "fails":
             res.witness = ex.witness
             res.certificate = (f"{run.field} residual exceeds its error bound; confirmed by an exact "
-                               f"rational witness")
+                               f"{'rational' if ex.method == 'rational' else 'modular'} witness")
             res.message = log
             return done("fails")
+        if ex.verdict == "inconclusive":
+            res.message = ("the floating-point residual exceeds its first-order error bound, and neither an exact "
+                           f"rational point nor a point modulo a prime decides ({ex.message}) | {log}")
+            return done("inconclusive")
         res.message = ("the floating-point residual exceeds its first-order error bound but the exact "
                        f"check passed ({ex.verdict}): the bound is too optimistic here | {log}")
         return done("inconclusive")

@@ -72,3 +72,17 @@ def test_a_function_changed_after_a_run_in_the_callers_process_is_traced_again()
             assert [r.verdict for r in stiefelsym.verify([c], sizes=[(3, 2)], methods=["float"], jobs=1)] == ["fails"]
     finally:
         SCALE[0] = 1
+
+
+def test_the_float_methods_confirmation_goes_modulo_a_prime_where_the_rational_point_is_beyond_expansion():
+    """(u^(2^40))^0 − 1 + tr(XᵀX) = 0 (false: it is r): float64's residual 1 exceeds its error bound, and the
+    confirmation at an exact rational point is `inconclusive` (a value of degree 2^40 on the way, beyond what it
+    writes out); the float method said "the exact check passed (inconclusive): the bound is too optimistic here"
+    and answered `inconclusive`.  A point modulo a prime evaluates any degree: its nonzero residual refutes."""
+    from stiefelsym.methods import fixed_size as fs
+    claims = stiefelsym.load(files=[FILES / "c2_degree.py"], catalog=False)
+    c = next(x for x in claims if x.id == "h4t-pow0-false")
+    res = fs.run_float(c, 2, 1, 0)
+    assert res.verdict == "fails" and "confirmed by an exact modular witness" in res.certificate, res.message
+    true = next(x for x in claims if x.id == "h4t-pow0-true")
+    assert fs.run_float(true, 2, 1, 0).verdict == "numeric"
