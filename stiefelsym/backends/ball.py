@@ -117,7 +117,10 @@ class BallNum:
             return o
         if o.b.contains(0):
             raise DegenerateError("division by a ball that contains zero")
-        return BallNum(self.b / o.b, self.m / float(abs(o.b).lower()))
+        # a divisor below float64's range (w^(2^21) of a w < 1): the ball is exact, its term scale overflows float64
+        # (the resolution test is then not made, as for any term scale that overflows)
+        low = float(abs(o.b).lower())
+        return BallNum(self.b / o.b, self.m / low if low > 0.0 else math.inf)
 
     def __rtruediv__(self, o):
         o = BallNum._lift(o)

@@ -86,3 +86,19 @@ def test_the_float_methods_confirmation_goes_modulo_a_prime_where_the_rational_p
     assert res.verdict == "fails" and "confirmed by an exact modular witness" in res.certificate, res.message
     true = next(x for x in claims if x.id == "h4t-pow0-true")
     assert fs.run_float(true, 2, 1, 0).verdict == "numeric"
+
+
+def test_a_divisor_below_float64s_range_is_no_error_of_the_ball_backend():
+    """w^(−2^21) · w^(2^21) − 1 = 0 (true; w = (u + 1)/(u + 2) < 1): the arb ball of w^(2^21) excludes 0, but the
+    float64 of its lower bound is 0.0, and the term scale's division raised ZeroDivisionError: `error` under ball
+    and under float (whose ladder reaches ball arithmetic).  The term scale overflows float64 there, which the
+    resolution test already treats as unresolved: ball is `inconclusive`, float `numeric` (mpmath's range holds
+    w^(2^21)), and the false twin still fails under both."""
+    from stiefelsym.methods import fixed_size as fs
+    claims = stiefelsym.load(files=[FILES / "c2_degree.py"], catalog=False)
+    true = next(x for x in claims if x.id == "h4t-negpow-true")
+    false = next(x for x in claims if x.id == "h4t-negpow-false")
+    assert fs.run_ball(true, 2, 1, 0).verdict == "inconclusive"
+    assert fs.run_float(true, 2, 1, 0).verdict == "numeric"
+    assert fs.run_ball(false, 2, 1, 0).verdict == "fails"
+    assert fs.run_float(false, 2, 1, 0).verdict == "fails"
