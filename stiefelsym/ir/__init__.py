@@ -370,9 +370,10 @@ def _remember(key: tuple, func: Callable, out: Any) -> Any:
     with (:func:`_cached_graph`), the oldest entries dropped."""
     from stiefelsym.ir.seal import reach
     home = getattr(func, "__module__", None)
-    # followed into the modules of the function's own package (the catalog's, for a claim of the catalog)
+    # followed into the modules of the function's own package (the catalog's, for a claim of the catalog) and into
+    # the caller's own modules (a helper of another module of theirs, a global it reads)
     package = home.rsplit(".", 1)[0] if isinstance(home, str) and "." in home else ""
-    slots = reach(func, package) if isinstance(func, types.FunctionType) else None
+    slots = reach(func, package, users=True) if isinstance(func, types.FunctionType) else None
     _GRAPHS[key] = (func, out, slots)
     while len(_GRAPHS) > GRAPH_CACHE_SIZE:
         _GRAPHS.popitem(last=False)

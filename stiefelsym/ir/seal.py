@@ -339,17 +339,18 @@ def _code_names(code: Any) -> set[str]:
 _IMMUTABLE = (int, float, complex, str, bytes, bool, type(None))
 
 
-def reach(func: Callable, package: str = "") -> tuple:
+def reach(func: Callable, package: str = "", users: bool = False) -> tuple:
     """What ``func`` computes with, as slots to compare later: the identity of its code, defaults and keyword
     defaults, of each value in its closure cells and of each global (or builtin) it reads, and the contents of
     the mutable values among them, followed into the functions, classes and modules of its own module and of the
-    modules under ``package`` (the catalog's, for a reviewed function; their code and globals in turn).  The
-    engine's own modules are the seal's.  Each slot is (holder, key, identity, contents): a dict and a name, a
-    cell, or a function and "code"."""
+    modules under ``package`` (the catalog's, for a reviewed function; their code and globals in turn), and with
+    ``users`` into every module of the caller's own (:func:`user_module`).  The engine's own modules are the
+    seal's.  Each slot is (holder, key, identity, contents): a dict and a name, a cell, or a function and "code"."""
     import builtins
     home = getattr(func, "__module__", None) or ""
     mine = lambda m: isinstance(m, str) and (m == home or bool(package) and (m == package or  # noqa: E731
-                                                                             m.startswith(package + ".")))
+                                                                             m.startswith(package + "."))
+                                             or users and user_module(m))
     slots: list[tuple] = []
     seen: set[int] = set()
     stack: list[tuple[Any, frozenset]] = [(func, frozenset())]
@@ -420,3 +421,21 @@ def intact(slots: tuple) -> bool:
         if now != ident or (contents is not None and _content(v, 2) != contents):
             return False
     return True
+
+
+def user_module(name: str) -> bool:
+    """Whether the module of that name is one of the caller's own: imported from a file that is neither the
+    engine's (stiefelsym), nor the standard library's, nor an installed package's (site-packages)."""
+    top = name.split(".", 1)[0]
+    if top == "stiefelsym" or top in sys.stdlib_module_names:
+        return False
+    f = getattr(sys.modules.get(name), "__file__", None)
+    if not isinstance(f, str):
+        return False
+    import sysconfig
+    where = Path(f).resolve()
+    for key in ("stdlib", "platstdlib", "purelib", "platlib"):
+        base = sysconfig.get_paths().get(key)
+        if base and where.is_relative_to(Path(base).resolve()):
+            return False
+    return "site-packages" not in where.parts and "dist-packages" not in where.parts
