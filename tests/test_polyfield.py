@@ -194,20 +194,42 @@ def test_inverse_and_singular_and_budget():
     S = Mat._rows([[x, y], [2 * x, 2 * y]], F)
     with pytest.raises(DegenerateError):
         S.inv()
-    # a dense 4x4 is one diagonal pivot and a 3x3 core (within budget); a dense 5x5 is not, unless its entries
-    # have degree <= 1 (then up to 6x6: I + S of the Cayley chart at r = n)
+    # a dense 4x4 is one diagonal pivot and a 3x3 core (within budget by its size); a dense 5x5 whose entries have
+    # degree <= 1 by its shape (up to 6x6: I + S of the Cayley chart at r = n); beyond those rules, by the work
+    # of its elimination (SOLVE_TERM_PRODUCTS): a dense 5x5 or 7x7 in two parameters takes at most about 10⁵ term
+    # products
     B4 = Mat._rows([[x if i == j else y + i * j for j in range(4)] for i in range(4)], F)
     assert (B4 @ B4.inv() - Mat.identity(4, F)).is_zero()
-    B5 = Mat._rows([[x * y if i == j else y + i * j for j in range(5)] for i in range(5)], F)
-    with pytest.raises(SymbolicBudget):
-        B5.inv()
     L5 = Mat._rows([[x if i == j else y + i * j for j in range(5)] for i in range(5)], F)
     assert (L5 @ L5.inv() - Mat.identity(5, F)).is_zero()
+    B5 = Mat._rows([[x * y if i == j else y + i * j for j in range(5)] for i in range(5)], F)
+    assert (B5 @ B5.inv() - Mat.identity(5, F)).is_zero()
     L7 = Mat._rows([[x if i == j else y + i * j for j in range(7)] for i in range(7)], F)
-    with pytest.raises(SymbolicBudget):
-        L7.inv()
+    assert (L7 @ L7.inv() - Mat.identity(7, F)).is_zero()
     N4 = Mat._rows([[1 if i == j else (x if j > i else 0) for j in range(4)] for i in range(4)], F)
     assert (N4 @ N4.inv() - Mat.identity(4, F)).is_zero()
+
+
+def test_budget_counts_the_work_of_a_symbolic_inverse():
+    """Beyond the rules of size and shape a symbolic inverse is taken while its term products stay within
+    SOLVE_TERM_PRODUCTS: I + S + kkᵀ (5 x 5, S skew, k a vector; the reduced Cayley chart at (6, 5)) is inverted; a
+    6 x 6 of products of two parameters is refused by its size, at the same step wherever it runs; a singular
+    5 x 5 of degree 2 is singular, neither inverted nor refused for its size."""
+    F = SymbolicField()
+    m = 5
+    S = {(i, j): F.param(f"s{i}{j}") for i in range(m) for j in range(i + 1, m)}
+    k = [F.param(f"k{i}") for i in range(m)]
+    M = Mat._rows([[int(i == j) + (S[i, j] if i < j else -S[j, i] if j < i else 0) + k[i] * k[j] for j in range(m)]
+                   for i in range(m)], F)
+    assert (M @ M.inv() - Mat.identity(m, F)).is_zero()
+    G = Mat._rows([[F.param(f"g{i}{j}") * F.param(f"h{i}{j}") + int(i == j) for j in range(6)] for i in range(6)], F)
+    with pytest.raises(SymbolicBudget, match=r"^a symbolic 6x6 linear solve$"):
+        G.inv()
+    # the last row the sum of the others: det = 0 as a polynomial, every pivot of the elimination nonzero but the last
+    rows = [[F.param(f"u{i}{j}") * F.param(f"v{i}{j}") + int(i == j) for j in range(m)] for i in range(m - 1)]
+    rows.append([sum((row[j] for row in rows), se.Integer(0)) for j in range(m)])
+    with pytest.raises(DegenerateError):
+        Mat._rows(rows, F).inv()
 
 
 def test_budget_admits_a_small_core():

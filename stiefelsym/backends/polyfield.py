@@ -1605,8 +1605,9 @@ class PolyBackend(Backend):
 
     def inv(self, a):
         """N/D inverted as D adj(N)/det(N): fraction-free Gauss-Jordan (Bareiss) on [N | I],
-        every division exact; the same budget as the symbolic solve (systems beyond
-        ``field.max_solve`` only when numeric pivots suffice)."""
+        every division exact; systems beyond ``field.max_solve`` when numeric pivots suffice, a small core
+        carries them, their entries have degree <= 1 (up to LINEAR_MAX_SOLVE), or else while the elimination's
+        work stays within SOLVE_TERM_PRODUCTS."""
         if type(a) is ObjMat:
             m = a.a.shape[0]
             I = self._fill(m, m, self.field.const(0))
@@ -1626,9 +1627,12 @@ class PolyBackend(Backend):
         if m == 0:
             return self.zeros(0, 0)
         N = [[a.a[i, j] for j in range(m)] for i in range(m)]
-        if m > self.field.max_solve and not _small_core(N, self.field.max_solve) and (a.den or not _numeric_pivots(N)) \
-                and not (m <= LINEAR_MAX_SOLVE and not a.den and _linear(N)):
-            raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
+        # beyond the rules of size and shape, the elimination goes on while its work (the term products of its
+        # steps, counted before each step) stays within SOLVE_TERM_PRODUCTS: where it would not, it stops at the
+        # same step on every machine
+        left = SOLVE_TERM_PRODUCTS if m > self.field.max_solve and not _small_core(N, self.field.max_solve) \
+            and (a.den or not _numeric_pivots(N)) and not (m <= LINEAR_MAX_SOLVE and not a.den and _linear(N)) \
+            else None
         rows = [N[i] + [R.one if j == i else R.zero for j in range(m)] for i in range(m)]
         prev = R.one
         for k in range(m):
@@ -1642,10 +1646,14 @@ class PolyBackend(Backend):
             rows[k], rows[piv] = rows[piv], rows[k]
             rk = rows[k]
             p = rk[k]
-            if _TERM_CAP is not None:
+            if _TERM_CAP is not None or left is not None:
                 lp, lk = len(p), _terms(rk)
-                _spend(sum(lp * _terms(rows[i]) + len(rows[i][k]) * lk for i in range(m) if i != k),
-                       "a step of a symbolic inverse")
+                count = sum(lp * _terms(rows[i]) + len(rows[i][k]) * lk for i in range(m) if i != k)
+                if left is not None:
+                    left -= count
+                    if left < 0:
+                        raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
+                _spend(count, "a step of a symbolic inverse")
             for i in range(m):
                 if i == k:
                     continue
@@ -1945,6 +1953,14 @@ def _frobenius(a: np.ndarray, b: np.ndarray, zero):
 #: λI − A): Bareiss elimination keeps minors of degree <= k at step k, so the entries stay small (at r = n = 6,
 #: (I + S)⁻¹ in 15 parameters takes well under a second); a general symbolic matrix has field.max_solve
 LINEAR_MAX_SOLVE = 6
+
+#: the most term products (the sum over its steps, counted as :func:`_spend` counts them) of a symbolic inverse
+#: beyond the rules of size and shape above (field.max_solve, a small core, numeric pivots, degree <= 1 up to
+#: LINEAR_MAX_SOLVE): a step that would exceed it raises :class:`SymbolicBudget` before it starts, so that a solve
+#: beyond it stops at the same step on every machine, after at most this much work (about 0.1 s).  M = I + S11 + KᵀK
+#: of the reduced Cayley chart at (6, 5) (5 x 5 of degree 2 in 15 parameters) takes 533,529 in 0.05 s; at (7, 6)
+#: (6 x 6 in 21) it would take 19.4 million (2.3 s), and I + S at r = n = 7 (7 x 7 of degree 1) 25.7 million (3.5 s)
+SOLVE_TERM_PRODUCTS = 1_000_000
 
 
 def _linear(N) -> bool:
