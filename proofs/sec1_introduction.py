@@ -38,7 +38,7 @@ def top_rank_stiefel_variety_corrected(s):
     return {"det(X)² − 1": d * d - s.q(1)}
 
 
-@claim("stiefel-corank-one", paper=("cond_X*",), kind="geo", section="1", sizes=ON_V_NN1, exact_max_n=5,
+@claim("stiefel-corank-one", paper=("cond_X*",), kind="geo", section="1", sizes=ON_V_NN1, exact_max_n=6,
        statement=r"V_{n,n-1}\cong SO(n):\ X\mapsto(X\ c(X)),\ c_i=(-1)^{n+i}\det X_{\hat\imath},\quad "
                  r"X^Tc=0,\ c^Tc=1,\ \det(X\ c)=1")
 def corank_one_stiefel_variety(s):

@@ -51,3 +51,12 @@ def test_the_correction_is_proved_exactly_at_the_raised_sizes_and_a_corrupted_co
         assert corrected.exact_at(n, n) and not c.exact_at(n, n)
     assert run_exact(c, 5, 5, SEED, func=corr.func).verdict == "proved"
     assert run_exact(c, 5, 5, SEED, func=det_squared_is_two).verdict == "fails"
+
+
+def test_the_completion_is_proved_exactly_at_6_5_and_a_corrupted_copy_fails_there(catalog):
+    """At (6, 5) the chart's r × r inverse (I + S11 + KᵀK, 5 × 5 of degree 2) is taken within the work budget of a
+    symbolic inverse (it was refused for its size): the completion is proved, the one without signs fails."""
+    c = catalog.get("stiefel-corank-one")
+    assert c.exact_at(6, 5) and not c.exact_at(7, 6)
+    assert run_exact(c, 6, 5, SEED).verdict == "proved"
+    assert run_exact(c, 6, 5, SEED, func=completion_without_the_sign).verdict == "fails"
