@@ -1606,8 +1606,8 @@ class PolyBackend(Backend):
     def inv(self, a):
         """N/D inverted as D adj(N)/det(N): fraction-free Gauss-Jordan (Bareiss) on [N | I],
         every division exact; systems beyond ``field.max_solve`` when numeric pivots suffice, a small core
-        carries them, their entries have degree <= 1 (up to LINEAR_MAX_SOLVE), or else while the elimination's
-        work stays within SOLVE_TERM_PRODUCTS."""
+        carries them or their entries have degree <= 1 (up to LINEAR_MAX_SOLVE), or else (up to WORKED_MAX_SOLVE)
+        while the elimination's work stays within SOLVE_TERM_PRODUCTS."""
         if type(a) is ObjMat:
             m = a.a.shape[0]
             I = self._fill(m, m, self.field.const(0))
@@ -1627,12 +1627,14 @@ class PolyBackend(Backend):
         if m == 0:
             return self.zeros(0, 0)
         N = [[a.a[i, j] for j in range(m)] for i in range(m)]
-        # beyond the rules of size and shape, the elimination goes on while its work (the term products of its
-        # steps, counted before each step) stays within SOLVE_TERM_PRODUCTS: where it would not, it stops at the
-        # same step on every machine
-        left = SOLVE_TERM_PRODUCTS if m > self.field.max_solve and not _small_core(N, self.field.max_solve) \
-            and (a.den or not _numeric_pivots(N)) and not (m <= LINEAR_MAX_SOLVE and not a.den and _linear(N)) \
-            else None
+        # beyond the rules of size and shape, a system of at most WORKED_MAX_SOLVE rows is eliminated while its
+        # work (the term products of its steps, counted before each step) stays within SOLVE_TERM_PRODUCTS: where
+        # it would not, it stops at the same step on every machine
+        beyond = m > self.field.max_solve and not _small_core(N, self.field.max_solve) \
+            and (a.den or not _numeric_pivots(N)) and not (m <= LINEAR_MAX_SOLVE and not a.den and _linear(N))
+        if beyond and m > WORKED_MAX_SOLVE:
+            raise SymbolicBudget(f"a symbolic {m}x{m} linear solve")
+        left = SOLVE_TERM_PRODUCTS if beyond else None
         rows = [N[i] + [R.one if j == i else R.zero for j in range(m)] for i in range(m)]
         prev = R.one
         for k in range(m):
@@ -1956,11 +1958,17 @@ LINEAR_MAX_SOLVE = 6
 
 #: the most term products (the sum over its steps, counted as :func:`_spend` counts them) of a symbolic inverse
 #: beyond the rules of size and shape above (field.max_solve, a small core, numeric pivots, degree <= 1 up to
-#: LINEAR_MAX_SOLVE): a step that would exceed it raises :class:`SymbolicBudget` before it starts, so that a solve
-#: beyond it stops at the same step on every machine, after at most this much work (about 0.1 s).  M = I + S11 + KᵀK
-#: of the reduced Cayley chart at (6, 5) (5 x 5 of degree 2 in 15 parameters) takes 533,529 in 0.05 s; at (7, 6)
-#: (6 x 6 in 21) it would take 19.4 million (2.3 s), and I + S at r = n = 7 (7 x 7 of degree 1) 25.7 million (3.5 s)
+#: LINEAR_MAX_SOLVE), of at most WORKED_MAX_SOLVE rows: a step that would exceed it raises :class:`SymbolicBudget`
+#: before it starts, so that a solve beyond it stops at the same step on every machine, after at most this much
+#: work (about 0.1 s).  M = I + S11 + KᵀK of the reduced Cayley chart at (6, 5) (5 x 5 of degree 2 in 15
+#: parameters) takes 533,529 in 0.05 s; at (7, 6) (6 x 6 in 21) it would take 19.4 million (2.3 s), and I + S at
+#: r = n = 7 (7 x 7 of degree 1) 25.7 million (3.5 s)
 SOLVE_TERM_PRODUCTS = 1_000_000
+
+#: the largest symbolic system SOLVE_TERM_PRODUCTS admits (a larger one beyond the rules is refused for its size:
+#: the singular 9 x 9 of the constraints' second derivatives of two mutants of double-neumann-diagonal at (4, 3)
+#: stays refused, as the mutation analysis records it)
+WORKED_MAX_SOLVE = 6
 
 
 def _linear(N) -> bool:
