@@ -76,7 +76,7 @@ import itertools
 from fractions import Fraction
 from typing import Any
 
-from stiefelsym.ir.graph import Graph, Named, Ref, _ref
+from stiefelsym.ir.graph import _REFS, Graph, Named, Ref, _ref
 from stiefelsym.ir.trace import CONSTANT_PRIMITIVES, MATRICES, NUMBERS, PRIMITIVES, ZERO_PRIMITIVES
 
 #: the engine step that reads a flow's components (registered below)
@@ -225,8 +225,20 @@ def _transform(g: Graph, flows: frozenset = frozenset()) -> tuple[Graph, list]:
         new.index = dict(itertools.islice(g.index.items(), start))
         remap.update((i, _ref(i)) for i in range(start))
     nested = _NESTED_PASS in flows      # only the derivatives along flows (see :func:`_nested`)
+    index, new_ops, new_args = new.index, new.ops, new.args
+    plain = new.sites is None
     for i in range(start, len(g.ops)):
         op, a = g.ops[i], g.args[i]
+        if plain and op != "call" and op != "prim":
+            # no pass rewrites it: copied (Graph.add in line)
+            a = m(a)
+            k = index.get((op, a))
+            if k is None:
+                k = index[(op, a)] = len(new_ops)
+                new_ops.append(op)
+                new_args.append(a)
+            remap[i] = _ref(k)
+            continue
         rewrite = None
         if nested:
             if op == "call" and a[1] == "d":
@@ -295,14 +307,15 @@ def _pruned(g: Graph) -> Graph:
     if g.output is None:
         return g
     order = sorted(g.needed())
-    num = {i: k for k, i in enumerate(order)}
+    _ref(len(order))        # the shared references, made once for every new number
+    num = {i: _REFS[k] for k, i in enumerate(order)}      # old number -> the reference to its new number
 
     def m(a: Any) -> Any:
         t = type(a)
         if t is Ref:
-            return _ref(num[a[0]])
+            return num[a[0]]
         if t is tuple:
-            return tuple([_ref(num[x[0]]) if type(x) is Ref else m(x) if type(x) is tuple else x for x in a])
+            return tuple([num[x[0]] if type(x) is Ref else m(x) if type(x) is tuple else x for x in a])
         return a
     out = Graph()
     out.refusals, out.fns, out.sizes = g.refusals, g.fns, g.sizes
@@ -316,7 +329,7 @@ def _pruned(g: Graph) -> Graph:
     else:
         for op, a in zip(ops, args):
             out.add(op, a)
-    out.output = Ref(num[g.output.i])
+    out.output = Ref(num[g.output.i][0])
     return out
 
 

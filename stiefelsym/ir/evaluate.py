@@ -65,8 +65,19 @@ def _deps(g: Graph) -> list[frozenset]:
         return cached
     deps: list[frozenset] = []
     empty: frozenset = frozenset()
-    for i, (op, args) in enumerate(zip(g.ops, g.args)):
-        below = [deps[j] for j in g.refs(i) if deps[j]]
+    nested = g._nested
+    for op, args in zip(g.ops, g.args):
+        # Graph.refs in line: most nodes read plain refs (a nested tuple is read through Graph._nested); the
+        # order of ``below`` does not matter, only its entries (a union) and their number
+        below = []
+        for x in args:
+            t = type(x)
+            if t is Ref:
+                dx = deps[x[0]]
+                if dx:
+                    below.append(dx)
+            elif t is tuple:
+                below += [deps[j] for j in nested(x) if deps[j]]
         if op != "scene" and op != "param" and op != "fn" and len(below) <= 1:
             deps.append(below[0] if below else empty)      # the common case: no set to build
             continue
@@ -259,8 +270,9 @@ class Evaluator:
         return owner
 
     def value(self, ref: Ref, frame: _Frame) -> Any:
-        i = ref.i
-        memo = self._memo(i, frame)
+        i = ref[0]
+        # a node that reads no function's parameter is the root's (:meth:`_owner`), without the call
+        memo = self._memo(i, frame) if self.deps[i] else self.root.memo
         v = memo.get(i, _MISSING)
         if v is not _MISSING:
             return v if memo is frame.memo or frame.fn == 0 else self._outer(v, memo, frame)

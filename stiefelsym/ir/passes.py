@@ -274,7 +274,13 @@ def _spaces(g: Graph) -> tuple["_Sides", list]:
                 cparts.append(col[0][1])
             sd = (S.new(parts=tuple(rparts)), S.new(parts=tuple(cparts)))
         elif op == "item":
-            sd = _element(g, a[0], a[1], sides, (opaque, opaque))
+            # a part of a node that is none of the structured values _element reads (an entry of a row of a
+            # Jacobian, say) has an engine value's sides, as _element says at its first step
+            base = a[0]
+            if type(base) is Ref and g.ops[base[0]] not in _STRUCTURED:
+                sd = (opaque, opaque)
+            else:
+                sd = _element(g, base, a[1], sides, (opaque, opaque))
         elif op in ("list", "tuple", "dict", "fn"):
             sd = None
         elif op == "prim" and a[0].qualname == DERIVATIVE_STEP:
@@ -308,6 +314,10 @@ def _step_body(g: Graph, a: tuple):
     if type(f) is Ref and g.ops[f.i] == "fn":
         return g.args[f.i][2]
     return None
+
+
+#: the ops of the nodes whose parts :func:`_element` looks into (a part of any other node has the default sides)
+_STRUCTURED = frozenset({"list", "tuple", "dict", "param", "call", "prim"})
 
 
 def _element(g: Graph, base: Ref, key, sides: list, default):

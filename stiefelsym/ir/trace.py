@@ -742,6 +742,9 @@ def _m_mat(s, rows, tags=("?", "?")):
     for r in rows:
         cells = []
         for x in r:
+            if type(x) is Tracer and x._t is t and x._kind != MAT:
+                cells.append(x._r)      # t.number_arg(x) of a number of this trace, in line
+                continue
             if isinstance(x, Tracer) and x._kind == MAT:
                 return t.refuse("the entries of s.mat are numbers")
             cells.append(t.number_arg(x))
@@ -967,9 +970,31 @@ def _m_jacobian(s, F, symmetric=None):
 
 def _grid(t: "Trace", node: Ref, rows: int, cols: int) -> list:
     out = []
+    g = t.g
+    if g.sites is not None:
+        for i in range(rows):
+            row = g.add("item", (node, i))
+            out.append([t.new("item", (row, j), SCALAR) for j in range(cols)])
+        return out
+    # Trace.new in line (no sites to record): one tracer per entry
+    index, ops, args = g.index, g.ops, g.args
     for i in range(rows):
-        row = t.g.add("item", (node, i))
-        out.append([t.new("item", (row, j), SCALAR) for j in range(cols)])
+        row = g.add("item", (node, i))
+        cells = []
+        for j in range(cols):
+            a = (row, j)
+            k = index.get(("item", a))
+            if k is None:
+                k = index[("item", a)] = len(ops)
+                ops.append("item")
+                args.append(a)
+            x = _NEW(Tracer)
+            _SET_T(x, t)
+            _SET_R(x, _REFS[k] if k < len(_REFS) else _ref(k))
+            _SET_KIND(x, SCALAR)
+            _SET_SHAPE(x, (None, None))
+            cells.append(x)
+        out.append(cells)
     return out
 
 
