@@ -256,12 +256,22 @@ class PolyRing:
         groups: dict = {}
         for n, d in parts:
             groups.setdefault(d, []).append(n)
-        acc = None
+        if len(groups) <= 2:
+            acc = None
+            for d, ns in groups.items():
+                acc = (_balanced_sum(ns), d) if acc is None else self.rf_add(acc, (_balanced_sum(ns), d))
+            return acc
+        # over the common denominator D of every group at once: each group's numerator times its own cofactor
+        # D/d, the products added in a balanced tree (the same numerator as adding the groups one by one, where
+        # the growing sum is multiplied again by the cofactor of each group that brings a new atom)
+        D = NODEN
+        for d in groups:
+            D = _merge_max(D, d)
+        terms = []
         for d, ns in groups.items():
-            while len(ns) > 1:
-                ns = [ns[k] + ns[k + 1] if k + 1 < len(ns) else ns[k] for k in range(0, len(ns), 2)]
-            acc = (ns[0], d) if acc is None else self.rf_add(acc, (ns[0], d))
-        return acc
+            n = _balanced_sum(ns)
+            terms.append(n if d == D else n * self.den_poly(_minus(D, d)))
+        return (_balanced_sum(terms), D)
 
     def rf_mul(self, a, b):
         """The product, divided by each atom of its denominator as often as the atom divides its numerator
@@ -1700,6 +1710,13 @@ class term_cap:
     def __exit__(self, *exc: Any) -> None:
         global _TERM_CAP
         _TERM_CAP = self._old
+
+
+def _balanced_sum(xs: list):
+    """The sum of a nonempty list of polynomials, added pairwise in a balanced tree."""
+    while len(xs) > 1:
+        xs = [xs[k] + xs[k + 1] if k + 1 < len(xs) else xs[k] for k in range(0, len(xs), 2)]
+    return xs[0]
 
 
 def _terms(xs) -> int:
