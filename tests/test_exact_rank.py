@@ -166,3 +166,56 @@ def test_a_rank_above_the_truth_beyond_the_function_field_rank_says_what_random_
     res = run_exact(_claim(rank_claim(lambda n, r: two_l(n, r) + 1)), 4, 1, 0)
     assert res.verdict == "inconclusive", res.line()
     assert "at 2 random points of prime fields the rank is" in res.message and "kernel=" in res.message, res.message
+
+
+def test_the_rank_modulo_a_prime_never_certifies_more_than_the_rank_over_q():
+    """rational_rank takes the rank modulo a prime first and accepts it only when it is the full size: a matrix of
+    rank 2 over Q (third row the sum of the others) is rank 2, never 3 (the fallback to flint's exact rank refuses
+    the full size); a matrix of full rank 3 whose determinant RANK_PRIME divides has rank 2 modulo p, and the
+    fallback still finds rank 3 over Q."""
+    import flint
+    from stiefelsym.methods.fixed_size import RANK_PRIME, rational_rank
+    q = flint.fmpq
+    low = [[q(1, 3), q(2), q(5, 7)], [q(4), q(-1, 2), q(3)], [q(13, 3), q(3, 2), q(26, 7)]]
+    assert flint.fmpq_mat(low).rank() == 2 and rational_rank(low) == 2
+    p = RANK_PRIME
+    special = [[q(1), q(0), q(0)], [q(0), q(1), q(0)], [q(0), q(0), q(p, 5)]]       # det = p/5: 0 modulo p
+    assert flint.nmod_mat(flint.fmpq_mat(special).numer_denom()[0], p).rank() == 2
+    assert rational_rank(special) == 3
+    assert rational_rank([[q(2), q(1)], [q(0), q(3)], [q(1), q(1)]]) == 2          # full rank found modulo p
+
+
+def test_a_kernel_of_full_rank_at_a_small_point_gives_the_rank_and_a_special_one_falls_back():
+    """_full_rank_at_point: a full rank at the small point is the rank (certified by a nonzero full-size minor), a
+    rank below the full size there (a matrix of generic rank below full size, or a minor vanishing at the small
+    point) sends the rank to the usual point of the run's generator, whose draws it then makes as before."""
+    import random
+    from stiefelsym.methods import fixed_size
+    calls = []
+
+    def fake(M, rng, modulus=None, height=2**62):
+        calls.append(height)
+        return M.ranks[height]
+
+    class Fake:
+        def __init__(self, shape, ranks):
+            self.shape, self.ranks = shape, ranks
+
+        def _shape(self):
+            return self.shape
+
+    real = fixed_size._rank_at_point
+    fixed_size._rank_at_point = fake
+    try:
+        assert fixed_size._full_rank_at_point(Fake((5, 3), {fixed_size.SMALL_HEIGHT: 3, 2**62: 3}),
+                                              random.Random(0)) == 3
+        assert calls == [fixed_size.SMALL_HEIGHT]
+        calls.clear()
+        assert fixed_size._full_rank_at_point(Fake((5, 3), {fixed_size.SMALL_HEIGHT: 2, 2**62: 3}),
+                                              random.Random(0)) == 3
+        assert calls == [fixed_size.SMALL_HEIGHT, 2**62]
+        calls.clear()
+        assert fixed_size._full_rank_at_point(Fake((5, 3), {fixed_size.SMALL_HEIGHT: 2, 2**62: 2}),
+                                              random.Random(0)) == 2
+    finally:
+        fixed_size._rank_at_point = real

@@ -744,10 +744,10 @@ class _RandomizedRank:
         self.drew = False
 
 
-def _point_values(M: Mat, rng: random.Random, modulus: int | None):
-    """The matrix's symbolic entries at a random integer point of its parameters: fmpq (modulus
-    None) or residues mod p; None when the point is a pole of an entry."""
-    bound = 2**62 if modulus is None else modulus
+def _point_values(M: Mat, rng: random.Random, modulus: int | None, height: int = 2**62):
+    """The matrix's symbolic entries at a random integer point of its parameters, coordinates in [−height, height):
+    fmpq (modulus None) or residues mod p; None when the point is a pole of an entry."""
+    bound = height if modulus is None else modulus
     values_at = getattr(backend(M._field), "values_at", None)
     if values_at is not None:
         # the backend's own polynomials evaluated at the point (flint), without symengine expressions
@@ -792,16 +792,52 @@ def _point_values(M: Mat, rng: random.Random, modulus: int | None):
     return out
 
 
-def _rank_at_point(M: Mat, rng: random.Random, modulus: int | None = None) -> int | None:
+#: the prime modulo which the rank of a rational matrix is taken first (:func:`rational_rank`): any prime bounds
+#: the rank over Q from below; this one (2^61 − 1) keeps every residue in a machine word
+RANK_PRIME = 2**61 - 1
+
+
+def rational_rank(vals: list[list[Any]]) -> int:
+    """The exact rank over Q of a matrix of flint rationals.  The integer matrix d·M (d the common denominator of
+    the entries) has the same rank, and its rank modulo a prime is at most that: where the rank modulo
+    :data:`RANK_PRIME` is already min(rows, cols) it is the rank over Q; otherwise flint's exact rank over Q
+    (a prime dividing a minor lowers the rank modulo p only, never the rank over Q)."""
+    Q = flint.fmpq_mat(vals)
+    full = min(Q.nrows(), Q.ncols())
+    if full and flint.nmod_mat(Q.numer_denom()[0], RANK_PRIME).rank() == full:
+        return full
+    return Q.rank()
+
+
+def _rank_at_point(M: Mat, rng: random.Random, modulus: int | None = None, height: int = 2**62) -> int | None:
     for _ in range(8):
-        vals = _point_values(M, rng, modulus)
+        vals = _point_values(M, rng, modulus, height)
         if vals is not None:
             if not vals or not vals[0]:
                 return 0
             if modulus is None:
-                return flint.fmpq_mat(vals).rank()
+                return rational_rank(vals)
             return flint.nmod_mat(vals, modulus).rank()
     return None
+
+
+#: the coordinates' height of the first point at which a kernel certificate's full rank is sought: the polynomials
+#: of a kernel (hundreds of thousands of terms for the pencil's) are evaluated at once at small integers, and a
+#: point where a minor vanishes only sends the rank to the usual point (:func:`_full_rank_at_point`)
+SMALL_HEIGHT = 2**8
+
+
+def _full_rank_at_point(M: Mat, rng: random.Random) -> int | None:
+    """The rank of M at an exact rational point (:func:`_rank_at_point`), first at a point of small height drawn
+    from M's shape alone (without drawing from ``rng``): a full rank there is the rank at every point where a
+    full-size minor does not vanish, so it is returned as it is; a smaller one is the rank at that point only,
+    and the rank is then taken at ``rng``'s point, as without the small point."""
+    full = min(M._shape())
+    if full:
+        small = _rank_at_point(M, random.Random(f"small point|{M._shape()}"), height=SMALL_HEIGHT)
+        if small == full:
+            return full
+    return _rank_at_point(M, rng)
 
 
 def _exact_rank(R: Rank, field: Field, randomized: _RandomizedRank | None = None,
@@ -980,7 +1016,7 @@ def _kernel_rank(R: Rank, rng: random.Random, lower: int | None) -> tuple[tuple[
         vanishes = all(f.is_zero(f.normalize(x)) for x in np.dot(M._view(), K._view()).flat)
     if not vanishes:
         return None, "; the kernel certificate is not one: M K is not identically 0 in the chart (not used)"
-    d = _rank_at_point(K, rng)
+    d = _full_rank_at_point(K, rng)
     if d is None:
         return None, "; the kernel certificate's rank was not found at an exact point (poles): not used"
     upper = cols - d
