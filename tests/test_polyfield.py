@@ -892,3 +892,22 @@ def test_a_row_that_only_looks_like_a_renamed_copy_is_multiplied():
     assert not be.product_vanishes(a, b)
     be, a, b = _poly_mats([[x, y]], [[y * l1, y * l2], [-x * l1, -x * l2]])
     assert be.product_vanishes(a, b)
+
+
+def test_rows_known_to_vanish_against_an_equal_kernel_are_not_multiplied_again():
+    """A row found with r b = 0 is remembered for kernels equal to b entry by entry (built again from the same
+    entries): the rows of a larger matrix equal to it need no product, and a row that differs from it, or the same
+    row against a kernel that differs, is still multiplied (negative controls)."""
+    from stiefelsym.backends import polyfield
+    x, y = se.symbols("x y")
+    rows, kernel = [[x * y, -x * x]], [[x], [y]]
+    be, a, b = _poly_mats(rows, kernel)
+    assert be.product_vanishes(a, b)
+    known = polyfield._vanishing_rows(b.a, be.ring.ctx)
+    assert known.holds(a.a[0])
+    be2, a2, b2 = _poly_mats(rows + [[y, -x]], kernel)
+    assert be2.product_vanishes(a2, b2)
+    be3, a3, b3 = _poly_mats(rows + [[y, -x + 1]], kernel)       # a row not in the kernel's annihilator
+    assert not be3.product_vanishes(a3, b3)
+    be4, a4, b4 = _poly_mats(rows, [[x], [y + 1]])                # another kernel: the row is multiplied again
+    assert not be4.product_vanishes(a4, b4)

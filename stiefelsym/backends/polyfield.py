@@ -1594,10 +1594,15 @@ class PolyBackend(Backend):
         in_a, in_b = set().union(*row_vars), set().union(*col_vars)
         rows = _renamed_copies(a.a, row_vars, in_b) if in_a - in_b else list(range(m))
         cols = _renamed_copies(b.a.T, col_vars, in_a) if in_b - in_a else list(range(n))
+        known = _vanishing_rows(b.a, R.ctx)
+        rows = [i for i in rows if not known.holds(a.a[i])]
         A, B = a.a[rows], b.a[:, cols]
         if A.size == 0 or B.size == 0:
             return True
-        return not any(_dot_content(A, B, R.zero).flat)
+        if any(_dot_content(A, B, R.zero).flat):
+            return False
+        known.add(A)
+        return True
 
     def block(self, grid):
         if any(type(b) is ObjMat for row in grid for b in row):
@@ -1874,6 +1879,50 @@ def _dot_content(a: np.ndarray, b: np.ndarray, zero) -> np.ndarray:
                     out[i] = x
                 return out.reshape(prod.shape)
     return _dot(a, b, zero)
+
+
+class _VanishingRows:
+    """The rows r found with r b = 0 (every entry the zero polynomial) for one array b of polynomials, by the
+    lengths of their entries: a row equal to one of them, entry by entry, has r b = 0 without a product (the
+    pencil's (A2) system at (6, 6) multiplies its 24 rows by the kernel, then the same 24 rows among 96 by the
+    same kernel, built again from the same entries)."""
+
+    def __init__(self, b: np.ndarray) -> None:
+        self.b = b
+        self.rows: dict[tuple, list[list]] = {}
+
+    @staticmethod
+    def key(entries: list) -> tuple:
+        return tuple(len(x) if x else 0 for x in entries)
+
+    def holds(self, row: np.ndarray) -> bool:
+        entries = row.tolist()
+        return any(all(x == y for x, y in zip(entries, seen)) for seen in self.rows.get(self.key(entries), ()))
+
+    def add(self, A: np.ndarray) -> None:
+        for entries in A.tolist():
+            self.rows.setdefault(self.key(entries), []).append(entries)
+
+
+#: the rows of the last kernels' products that vanish (:class:`_VanishingRows`), by the context, the shape and the
+#: lengths of the kernel's entries (a kernel equal entry by entry to one met before shares its rows)
+_VANISHING: "OrderedDict[tuple, list[_VanishingRows]]" = OrderedDict()
+VANISHING_KEPT = 4
+
+
+def _vanishing_rows(b: np.ndarray, ctx) -> _VanishingRows:
+    """The rows known to vanish against b, a kernel's numerators in the context ``ctx`` (kept with b)."""
+    key = (id(ctx), b.shape, _VanishingRows.key(b.flat))
+    for hit in _VANISHING.get(key, ()):
+        if hit.b is b or all(x == y for x, y in zip(hit.b.flat, b.flat)):
+            _VANISHING.move_to_end(key)
+            return hit
+    hit = _VanishingRows(b)
+    _VANISHING.setdefault(key, []).append(hit)
+    _VANISHING.move_to_end(key)
+    while len(_VANISHING) > VANISHING_KEPT:
+        _VANISHING.popitem(last=False)
+    return hit
 
 
 def _row_variables(a: np.ndarray) -> list[set[int]]:
