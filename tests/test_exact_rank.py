@@ -219,3 +219,22 @@ def test_a_kernel_of_full_rank_at_a_small_point_gives_the_rank_and_a_special_one
                                               random.Random(0)) == 2
     finally:
         fixed_size._rank_at_point = real
+
+
+def test_the_cheapest_rows_of_a_tall_kernel_give_its_full_rank_and_a_deficient_one_is_not_full():
+    """_cheapest_rows_rank evaluates the 2c rows with the fewest terms of a matrix with more than 2c rows (c its
+    columns): full rank there is full rank of the matrix; a matrix of rank below c is never found full (rows of a
+    matrix have at most its rank), and a matrix with at most 2c rows is left to the whole evaluation (None)."""
+    import symengine as se
+    from stiefelsym.methods.fixed_size import _cheapest_rows_rank, _full_rank_at_point
+    F = SymbolicField()
+    x, y = se.symbols("x y")
+    rows = [[x, 1], [y, x * y], [x + y, 2], [x * x, y], [1, 0], [0, 1], [(x + y) ** 3, y ** 4], [x ** 5, 1 + y ** 5]]
+
+    def mat(rows):
+        return Mat._rows([[se.sympify(e) for e in row] for row in rows], F)
+    rng = random.Random(0)
+    assert _cheapest_rows_rank(mat(rows), rng) == 2 and _full_rank_at_point(mat(rows), rng) == 2
+    deficient = mat([[row[0], 2 * row[0]] for row in rows])
+    assert _cheapest_rows_rank(deficient, rng) in (None, 1) and _full_rank_at_point(deficient, rng) == 1
+    assert _cheapest_rows_rank(mat(rows[:4]), rng) is None

@@ -1296,6 +1296,32 @@ class PolyBackend(Backend):
             rows.append(row)
         return rows
 
+    def row_terms(self, s) -> list[int] | None:
+        """The number of terms of each row's numerators (what evaluating the row costs), or None for a matrix of
+        symengine entries."""
+        if type(s) is ObjMat:
+            return None
+        if type(s) is np.ndarray:          # a matrix built entry by entry: the field's scalars
+            out = []
+            for row in s.tolist():
+                count = 0
+                for x in row:
+                    if type(x) is _RF and x.R is self.ring:
+                        count += len(x.n)
+                        continue
+                    if type(x) in (_RF, _BigPoly):
+                        return None
+                    try:
+                        count += len(self.ring.from_se(x)[0])
+                    except NotRational:
+                        return None
+                out.append(count)
+            return out
+        s = ratmat.fix(self, s) if type(s) is RatMat else self._fix(s)
+        if type(s) is PolyMat and s.z:
+            return [0] * s.a.shape[0]
+        return [sum(len(x) for x in row if x) for row in s.a.tolist()]
+
     def take(self, s, rows, cols):
         """A block without converting the rest of the matrix: numerators sliced over the same
         denominator (then reduced), or the generic entries sliced."""
@@ -1907,7 +1933,7 @@ class _VanishingRows:
 #: the rows of the last kernels' products that vanish (:class:`_VanishingRows`), by the context, the shape and the
 #: lengths of the kernel's entries (a kernel equal entry by entry to one met before shares its rows)
 _VANISHING: "OrderedDict[tuple, list[_VanishingRows]]" = OrderedDict()
-VANISHING_KEPT = 4
+VANISHING_KEPT = 2
 
 
 def _vanishing_rows(b: np.ndarray, ctx) -> _VanishingRows:
