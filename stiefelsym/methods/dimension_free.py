@@ -28,7 +28,7 @@ import time
 from typing import Any, Callable
 
 from stiefelsym.certificate_check import CASES, check_certificate
-from stiefelsym.claims import Claim, Count, Rank, Size
+from stiefelsym.claims import Claim, Count, Expired, Rank, Size
 from stiefelsym.ir.statements import InverseIdentities
 from stiefelsym.methods import fixed_size
 from stiefelsym.methods.fixed_size import _base_result, division_probe, _entries, _short, call_claim
@@ -40,6 +40,7 @@ from stiefelsym.free.columns import COMPLETE
 from stiefelsym.free.rewriting import latex_text
 from stiefelsym.latex import tex_words, unicode_name
 from stiefelsym.ir import GraphUnavailable, NotDeterministic, SizeFamily, TraceRefused
+from stiefelsym.ir.passes import power_exponents
 from stiefelsym.methods.families import size_families
 
 
@@ -100,6 +101,18 @@ def _square_hint(claim: Claim, family: SizeFamily | None) -> str:
     return ""
 
 
+def _powers(claim: Claim, func: Callable, family: SizeFamily | None) -> int:
+    """The product of the exponents of the powers in the claim's graph with symbolic sizes (1 where it does not
+    trace: the run then says why)."""
+    try:
+        cons = fixed_size.REALIZATIONS[claim.realization or "standard"]
+        return power_exponents(fixed_size._claim_graph(func, None, None, (cons.name, cons.build), family=family))
+    except Expired:
+        raise
+    except Exception:   # noqa: BLE001 - a claim refused here is reported by the run itself
+        return 1
+
+
 def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: bool = True) -> Result:
     """The dimension-free run of ``func`` on every n, r (``family`` None) or on one family of sizes: the scene
     with the family's own hypotheses, the claim traced on the family (a comparison of sizes it makes is
@@ -134,6 +147,10 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         return undecided(f"the claim touched {'; '.join(refused)}, which needs coordinates (refused by the "
                          "dimension-free scene, recorded before it was raised); decided by the fixed-size methods")
 
+    powers = _powers(claim, func, family)
+    if powers > fixed_size.POWER_GATE:
+        return undecided(f"its powers x^k multiply to {powers}, beyond the {fixed_size.POWER_GATE} that the free "
+                         "algebra writes out as products; decided by the fixed-size methods")
     try:
         with recording(scene.tracker):   # every refusal goes to the run's record before it is raised
             checks = call_claim(func, scene, family)
