@@ -520,17 +520,104 @@ _REVIEWED: dict[int, tuple[Any, tuple[Callable, ...]]] = {}
 _PRINTS: dict[int, tuple[Callable, tuple]] = {}
 
 
+def _code_names(code: Any) -> set[str]:
+    """The global and attribute names a code object and the code nested in it (lambdas, comprehensions,
+    inner functions) read."""
+    import types
+    names, stack = set(), [code]
+    while stack:
+        c = stack.pop()
+        names.update(c.co_names)
+        stack += [k for k in c.co_consts if isinstance(k, types.CodeType)]
+    return names
+
+
+#: values whose identity is their content (immutable, and not containers of anything mutable)
+_IMMUTABLE = (int, float, complex, str, bytes, bool, type(None))
+
+
 def _reach(func: Callable) -> tuple:
-    """What ``func`` computes with (:func:`stiefelsym.ir.seal.reach`), followed into its own module and the
-    catalog's."""
-    from stiefelsym.ir.seal import reach
-    return reach(func, CATALOG)
+    """What ``func`` computes with, as slots to compare later: the identity of its code, defaults and keyword
+    defaults, of each value in its closure cells and of each global (or builtin) it reads, and the contents of
+    the mutable values among them, followed into the functions, classes and modules of its own module and of the
+    catalog (their code and globals in turn).  The engine's own modules are the seal's (:mod:`stiefelsym.ir.seal`).
+    Each slot is (holder, key, identity, contents): a dict and a name, a cell, or a function and "code"."""
+    import builtins
+    import types
+    from stiefelsym.ir.seal import _code_of, _content
+    home = getattr(func, "__module__", None) or ""
+    mine = lambda m: isinstance(m, str) and (m == home or m == CATALOG or m.startswith(CATALOG + "."))  # noqa: E731
+    slots: list[tuple] = []
+    seen: set[int] = set()
+    stack: list[tuple[Any, frozenset]] = [(func, frozenset())]
+
+    def value(holder: Any, key: Any, v: Any, names: frozenset) -> None:
+        slots.append((holder, key, id(v), None if type(v) in _IMMUTABLE or callable(v) else _content(v, 2)))
+        stack.append((v, names))
+
+    while stack:
+        v, names = stack.pop()
+        if isinstance(v, (staticmethod, classmethod)):
+            v = v.__func__
+        if id(v) in seen and not isinstance(v, types.ModuleType):
+            continue
+        seen.add(id(v))
+        if isinstance(v, types.FunctionType) and (v is func or mine(v.__module__)):
+            slots.append((v, "code", _code_of(v), None))
+            own = frozenset(_code_names(v.__code__))
+            for i, d in enumerate((v.__defaults__ or ()) + tuple((v.__kwdefaults__ or {}).values())):
+                slots.append((v, f"default {i}", id(d), None if type(d) in _IMMUTABLE else _content(d, 2)))
+            for cell in v.__closure__ or ():
+                try:
+                    value(cell, "cell", cell.cell_contents, own)
+                except ValueError:          # an empty cell
+                    slots.append((cell, "cell", None, None))
+            g = v.__globals__
+            slots.append((g, "__builtins__", id(g["__builtins__"]) if "__builtins__" in g else None, None))
+            for name in sorted(own):
+                if name in g:
+                    value(g, name, g[name], own)
+                elif hasattr(builtins, name):
+                    # a builtin: absent from the module (a global of that name would shadow it), and itself
+                    slots.append((g, name, None, None))
+                    slots.append((vars(builtins), name, id(getattr(builtins, name)), None))
+        elif isinstance(v, types.ModuleType) and mine(v.__name__):
+            attrs = vars(v)
+            for name in sorted(names):
+                if name in attrs:
+                    value(attrs, name, attrs[name], names)
+        elif isinstance(v, type) and mine(v.__module__):
+            for name, m in sorted(vars(v).items()):
+                if isinstance(m, (types.FunctionType, staticmethod, classmethod)):
+                    value(vars(v), name, m, frozenset())
+    return tuple(slots)
 
 
 def _intact(slots: tuple) -> bool:
     """Whether every slot of :func:`_reach` still holds what it held."""
-    from stiefelsym.ir.seal import intact
-    return intact(slots)
+    from stiefelsym.ir.seal import _code_of, _content
+    now: Any
+    for holder, key, ident, contents in slots:
+        if key == "code":
+            now = _code_of(holder)
+        elif key == "cell":
+            try:
+                v = holder.cell_contents
+            except ValueError:
+                now = v = None
+            else:
+                now = id(v)
+        elif isinstance(key, str) and key.startswith("default "):
+            i = int(key.split()[1])
+            ds = (holder.__defaults__ or ()) + tuple((holder.__kwdefaults__ or {}).values())
+            v = ds[i] if i < len(ds) else None
+            now = id(v) if i < len(ds) else None
+        else:
+            v = holder.get(key, _intact)
+            now = id(v) if v is not _intact else None
+        if now != ident or (contents is not None and _content(v, 2) != contents):
+            return False
+    return True
 
 
 def reviewed_functions(claim: Any) -> tuple[Callable, ...]:

@@ -10,7 +10,6 @@ from __future__ import annotations
 import contextvars
 import pickle
 import threading
-import types
 import weakref
 from collections import OrderedDict
 from typing import Any, Callable
@@ -203,9 +202,10 @@ def _compile(func: Callable, n: int | None, r: int | None, constraints: tuple[st
     # traced twice (a trace compared with itself is no determinism check)
     key = (id(func), n, r, family, constraints[0], twice)
     for k in ((key,) if twice else (key[:-1] + (True,), key)) if cached else ():
-        hit = _cached_graph(k, func)
-        if hit is not None:
-            return hit
+        hit = _GRAPHS.get(k)
+        if hit is not None and hit[0] is func:
+            _GRAPHS.move_to_end(k)
+            return hit[1]
     try:
         seeded = _FIRST.pop((id(func), n, r, constraints[0]), None) if twice and family is None and cached else None
         if seeded is not None and seeded[0] is func:
@@ -302,9 +302,10 @@ def _typed_at(func: Callable, free: Graph, n: int, r: int, constraints: tuple[st
     of the claim runs, no trace of the claim holds a number), which checks every shape with the numbers."""
     from stiefelsym.ir.replay import GraphClaim
     key = (id(func), n, r, constraints[0], "typed")
-    hit = _cached_graph(key, func) if cached else None
-    if hit is not None:
-        return hit
+    hit = _GRAPHS.get(key) if cached else None
+    if hit is not None and hit[0] is func:
+        _GRAPHS.move_to_end(key)
+        return hit[1]
     try:
         try:
             # the replay is engine code (no code of the claim runs): traced in this thread, in an empty
@@ -332,9 +333,10 @@ def _same_at_numbers(func: Callable, on_family: Graph, n: int, r: int, constrain
     a size (it tells the two tracings apart, by introspection) has no verdict at that size, listed or not: the
     dimension-free method's proof on the family is about its graph on the family."""
     key = (id(func), n, r, constraints[0], "compared", family)
-    hit = _cached_graph(key, func)
-    if hit is not None:
-        return hit
+    hit = _GRAPHS.get(key)
+    if hit is not None and hit[0] is func:
+        _GRAPHS.move_to_end(key)
+        return hit[1]
     at = _compile(func, n, r, constraints, twice=False, at_numbers=True)
     out: Any = on_family
     if not isinstance(at, Graph):
@@ -347,34 +349,9 @@ def _same_at_numbers(func: Callable, on_family: Graph, n: int, r: int, constrain
     return _remember(key, func, out)
 
 
-def _cached_graph(key: tuple, func: Callable) -> Any:
-    """The graph (or refusal) cached under ``key`` for ``func`` while what ``func`` computes with is what it was
-    when it was traced (its code, defaults, closure and the globals it and its helpers read: :func:`.seal.reach`);
-    None otherwise, and the entry dropped.  A function changed in the caller's process after a run (its
-    ``__code__`` swapped, a default or a global it reads rebound) is another statement: it is traced again,
-    whatever ran before in the process."""
-    hit = _GRAPHS.get(key)
-    if type(hit) is not tuple or len(hit) != 3 or hit[0] is not func:
-        return None      # (an entry this module did not make is not one: claim code can write the dict)
-    if hit[2] is not None:
-        from stiefelsym.ir.seal import intact
-        if not intact(hit[2]):
-            del _GRAPHS[key]
-            return None
-    _GRAPHS.move_to_end(key)
-    return hit[1]
-
-
 def _remember(key: tuple, func: Callable, out: Any) -> Any:
-    """``out`` (a graph or a refusal) cached under ``key`` for ``func``, with what a Python function computes
-    with (:func:`_cached_graph`), the oldest entries dropped."""
-    from stiefelsym.ir.seal import reach
-    home = getattr(func, "__module__", None)
-    # followed into the modules of the function's own package (the catalog's, for a claim of the catalog) and into
-    # the caller's own modules (a helper of another module of theirs, a global it reads)
-    package = home.rsplit(".", 1)[0] if isinstance(home, str) and "." in home else ""
-    slots = reach(func, package, users=True) if isinstance(func, types.FunctionType) else None
-    _GRAPHS[key] = (func, out, slots)
+    """``out`` (a graph or a refusal) cached under ``key`` for ``func``, the oldest entries dropped."""
+    _GRAPHS[key] = (func, out)
     while len(_GRAPHS) > GRAPH_CACHE_SIZE:
         _GRAPHS.popitem(last=False)
     return out
