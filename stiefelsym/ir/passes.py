@@ -527,6 +527,35 @@ def power_exponents(g: Graph) -> int:
     return cached
 
 
+#: the nodes whose value's degree is at most the sum of their arguments' (a product, a quotient, an inverse)
+PRODUCT_OPS = frozenset({"mul", "matmul", "div", "inv", "inverse", "right_inverse"})
+#: where :func:`product_degree` stops counting
+PRODUCT_DEGREE_CAP = 1 << 64
+
+
+def product_degree(g: Graph) -> int:
+    """A rough degree of the graph's products: every node reading no other node 1, a product (:data:`PRODUCT_OPS`)
+    the sum of its arguments', any other node (a call's arguments in their tuples included) the largest of its
+    arguments' (capped at :data:`PRODUCT_DEGREE_CAP`).
+    Not a bound (an engine step or an inverse multiplies degrees by a size), but the part of the degree that grows
+    through products written in a row: x = x * x forty times is u^(2^40) with no power node, where a product of
+    twenty matrices is 20."""
+    cached = g.cache.get("product degree")
+    if cached is None:
+        deg: list[int] = []
+        for op, a in zip(g.ops, g.args):
+            refs = [deg[j] for j in Graph._nested(a)]
+            if not refs:
+                d = 1
+            elif op in PRODUCT_OPS:
+                d = min(sum(refs), PRODUCT_DEGREE_CAP)
+            else:
+                d = max(refs)
+            deg.append(d)
+        cached = g.cache["product degree"] = max(deg, default=0)
+    return cached
+
+
 #: the exponent range in which a constant's float64 value and its error term are normal numbers
 FLOAT_EXPONENT_LIMIT = 1000
 

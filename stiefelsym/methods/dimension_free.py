@@ -40,7 +40,7 @@ from stiefelsym.free.columns import COMPLETE
 from stiefelsym.free.rewriting import latex_text
 from stiefelsym.latex import tex_words, unicode_name
 from stiefelsym.ir import GraphUnavailable, NotDeterministic, SizeFamily, TraceRefused
-from stiefelsym.ir.passes import power_exponents
+from stiefelsym.ir.passes import power_exponents, product_degree
 from stiefelsym.methods.families import size_families
 
 
@@ -101,16 +101,17 @@ def _square_hint(claim: Claim, family: SizeFamily | None) -> str:
     return ""
 
 
-def _powers(claim: Claim, func: Callable, family: SizeFamily | None) -> int:
-    """The product of the exponents of the powers in the claim's graph with symbolic sizes (1 where it does not
-    trace: the run then says why)."""
+def _powers(claim: Claim, func: Callable, family: SizeFamily | None) -> tuple[int, int]:
+    """The product of the exponents of the powers in the claim's graph with symbolic sizes, and the degree of its
+    products (:func:`.passes.product_degree`); (1, 1) where it does not trace: the run then says why."""
     try:
         cons = fixed_size.REALIZATIONS[claim.realization or "standard"]
-        return power_exponents(fixed_size._claim_graph(func, None, None, (cons.name, cons.build), family=family))
+        g = fixed_size._claim_graph(func, None, None, (cons.name, cons.build), family=family)
+        return power_exponents(g), product_degree(g)
     except Expired:
         raise
     except Exception:   # noqa: BLE001 - a claim refused here is reported by the run itself
-        return 1
+        return 1, 1
 
 
 def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: bool = True) -> Result:
@@ -147,10 +148,13 @@ def run_free_on(claim: Claim, func: Callable, family: SizeFamily | None, alone: 
         return undecided(f"the claim touched {'; '.join(refused)}, which needs coordinates (refused by the "
                          "dimension-free scene, recorded before it was raised); decided by the fixed-size methods")
 
-    powers = _powers(claim, func, family)
+    powers, products = _powers(claim, func, family)
     if powers > fixed_size.POWER_GATE:
         return undecided(f"its powers x^k multiply to {powers}, beyond the {fixed_size.POWER_GATE} that the free "
                          "algebra writes out as products; decided by the fixed-size methods")
+    if products > fixed_size.PRODUCT_GATE:
+        return undecided(f"its products in a row reach a degree of {products}, beyond the {fixed_size.PRODUCT_GATE} "
+                         "that the free algebra writes out; decided by the fixed-size methods")
     try:
         with recording(scene.tracker):   # every refusal goes to the run's record before it is raised
             checks = call_claim(func, scene, family)

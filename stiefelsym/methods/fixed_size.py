@@ -46,7 +46,7 @@ from stiefelsym.ir.notation import power_of_ten
 from stiefelsym.ir.evaluate import evaluate
 from stiefelsym.ir.seal import verify as verify_engine
 from stiefelsym.ir.passes import (BLOCK_SPLITTING, FLOAT_EXPONENT_LIMIT, coordinate_needs, coordinate_reads, outside_float_range,
-                                  power_exponents)
+                                  power_exponents, product_degree)
 from stiefelsym.scene import REALIZATIONS
 from stiefelsym.backends.fields import (PRIME_BITS, PRIME_LOW, PRIMES_IN_RANGE_LOWER, ConstantDegenerate, DegenerateError, DegreeField,
                      ErrNum, Field, FloatField, ModularField, RationalField, SymbolicBudget, random_prime)
@@ -1315,6 +1315,12 @@ EXPANDABLE_DEGREE = 1 << 20
 #: it); a single power x^k is k products in one node.  The catalog has no power.
 POWER_GATE = 1 << 8
 
+#: the degree of the graph's products (:func:`product_degree`) up to which the structural degree bound is not computed
+#: either: forty products x = x * x make u^(2^40) without a power, whose value at a rational point (one big
+#: integer squared by flint, which no deadline interrupts) ran the exact method 207 s past its 120 s, and its
+#: command-line child out of memory
+PRODUCT_GATE = 1 << 16
+
 
 def _beyond_expansion(claim: Claim, n: int, r: int, method: str, seed: int | None, func: Callable) -> Result | None:
     """An ``inconclusive`` record for a claim whose structural degree bound (:func:`degree_bound`, degree markers:
@@ -1323,7 +1329,8 @@ def _beyond_expansion(claim: Claim, n: int, r: int, method: str, seed: int | Non
     claim)."""
     try:
         cons = REALIZATIONS[claim.realization or "standard"]
-        if power_exponents(_claim_graph(func, n, r, (cons.name, cons.build))) <= POWER_GATE:
+        g = _claim_graph(func, n, r, (cons.name, cons.build))
+        if power_exponents(g) <= POWER_GATE and product_degree(g) <= PRODUCT_GATE:
             return None
         bound = degree_bound(claim, n, r, func)
     except Expired:
