@@ -535,8 +535,9 @@ PRODUCT_DEGREE_CAP = 1 << 64
 
 def product_degree(g: Graph) -> int:
     """A rough degree of the graph's products: every node reading no other node 1, a product (:data:`PRODUCT_OPS`)
-    the sum of its arguments', any other node (a call's arguments in their tuples included) the largest of its
-    arguments' (capped at :data:`PRODUCT_DEGREE_CAP`).
+    the sum of its arguments', a power x^k |k| times its base's (so that products and powers in a row multiply:
+    fourteen squarings then a power 256 pass each gate alone), any other node (a call's arguments in their tuples
+    included) the largest of its arguments' (capped at :data:`PRODUCT_DEGREE_CAP`).
     Not a bound (an engine step or an inverse multiplies degrees by a size), but the part of the degree that grows
     through products written in a row: x = x * x forty times is u^(2^40) with no power node, where a product of
     twenty matrices is 20."""
@@ -549,6 +550,8 @@ def product_degree(g: Graph) -> int:
                 d = 1
             elif op in PRODUCT_OPS:
                 d = min(sum(refs), PRODUCT_DEGREE_CAP)
+            elif op == "pow" and len(a) > 1 and type(a[1]) is int:
+                d = min(max(refs) * max(1, abs(a[1])), PRODUCT_DEGREE_CAP)     # k products of the base in one node
             else:
                 d = max(refs)
             deg.append(d)

@@ -16,7 +16,8 @@ def _claims():
 
 @pytest.mark.parametrize("cid, truth", [("h5p-mono-squarings-true", "checked"), ("h5p-mono-squarings-false", "fails"),
                                         ("h5p-matpow-false", "fails"), ("h5p-ratio-squarings-false", "fails"),
-                                        ("h5p-trace-squarings-false", "fails")])
+                                        ("h5p-trace-squarings-false", "fails"),
+                                        ("h5p-squarings-then-power-false", "fails")])
 def test_a_degree_made_by_products_in_a_row_is_inconclusive_at_once(cid, truth):
     """u^(2^40) made by forty products x = x * x (no power node, so the power gate let it through): the exact method
     evaluated u at a rational point and squared the integer for 207 s of CPU (budget 120 s), its command-line child

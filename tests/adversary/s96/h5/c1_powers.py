@@ -96,3 +96,14 @@ def trace_squarings_false(s):
         m = s.Ir * t
         t = s.tr(m @ m) / s.r
     return {"r": t * u(s) - t}
+
+
+@claim("h5p-squarings-then-power-false", kind="id", sizes=SZ)
+def squarings_then_power_false(s):
+    """False: x u − x = 0 for x = (u^(2^14))^256, fourteen squarings then a power 256: each below its own gate (the
+    products' degree 3·2^14, the power 256), the two together of degree 3·2^22 (the exact method ran past 100 s)."""
+    x = u(s)
+    for _ in range(14):
+        x = x * x
+    x = x ** 256
+    return {"r": x * u(s) - x}
